@@ -1,0 +1,40 @@
+// The geometric kernel: spheres externally tangent to four given spheres.
+//
+// Every solver returns only real external solutions with a finite centre and a
+// positive finite radius whose tangency residual (see tangency_residual) is at
+// most kAcceptResidual; degenerate, imaginary or ill-conditioned cases give no
+// solution. They never return NaN or infinity.
+#pragma once
+
+#include "vec3.h"
+
+namespace reinforce {
+
+struct Sphere {
+  Vec3 c;
+  double r = 0;
+};
+
+// Residual above which a computed solution counts as garbage and is dropped.
+constexpr double kAcceptResidual = 1e-6;
+
+// max_i | |c - c_i| - (r + r_i) | / r; +infinity if s.r <= 0.
+double tangency_residual(const Sphere in[4], const Sphere &s);
+
+// Geometric inversion (Jerier et al.): shrink by the smallest radius, invert
+// about that point, fit the planes tangent to the three inverted spheres,
+// invert back. Works in local coordinates scaled to about 1. Fails (returns
+// 0) when the three inverted centres are nearly collinear.
+// newton_steps > 0 polishes each solution with Newton steps on the four
+// tangency equations. Returns the number of solutions written to out (0..2).
+int tangent_spheres_inversion(const Sphere in[4], Sphere out[2], int newton_steps = 0);
+
+// Direct algebraic reference: linear system for the centre in terms of r,
+// then a quadratic in r. Fails when the four centres are nearly coplanar.
+int tangent_spheres_algebraic(const Sphere in[4], Sphere out[2], int newton_steps = 0);
+
+// Newton steps on F_i(c, r) = |c - c_i| - (r + r_i). Keeps the iterate only
+// while the residual decreases; returns true if s was improved or kept finite.
+bool polish_tangent_sphere(const Sphere in[4], Sphere &s, int steps);
+
+}    // namespace reinforce
