@@ -1,0 +1,327 @@
+// Engine tests on synthetic scenes: a jittered polydisperse packing with a
+// bar of overlapping spheres through it, seen by one process.
+#include "relocation.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using namespace reinforce;
+
+namespace {
+
+constexpr double kRmin = 0.02, kRmax = 0.04;
+
+struct Scene {
+  std::vector<Particle> particles;
+  Domain domain;
+};
+
+// Matrix spheres on a jittered cubic lattice (no overlaps), radii uniform in
+// [kRmin, kRmax], in the box [0,1]x[0,0.5]x[0,0.5]; one bar along x at
+// (y, z) = (0.25, 0.25) made of spheres of radius bar_r every 0.8 * 2 bar_r.
+Scene make_scene(unsigned seed, double bar_r = 0.03, double spacing = 0.085)
+{
+  Scene s;
+  s.domain.lo = {0, 0, 0};
+  s.domain.hi = {1, 0.5, 0.5};
+  s.domain.view_lo = {-1, -1, -1};
+  s.domain.view_hi = {2, 2, 2};
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unif(0, 1);
+  std::int64_t id = 1;
+  // Whole cells per box length, so the lattice is also periodic.
+  int cells[3];
+  Vec3 step;
+  for (int d = 0; d < 3; ++d) {
+    cells[d] = static_cast<int>((s.domain.hi[d] - s.domain.lo[d]) / spacing);
+    step[d] = (s.domain.hi[d] - s.domain.lo[d]) / cells[d];
+  }
+  for (int i = 0; i < cells[0]; ++i)
+    for (int j = 0; j < cells[1]; ++j)
+      for (int k = 0; k < cells[2]; ++k) {
+        const double r = kRmin + (kRmax - kRmin) * unif(rng);
+        Vec3 c;
+        const int ijk[3] = {i, j, k};
+        for (int d = 0; d < 3; ++d)
+          c[d] = (ijk[d] + 0.5) * step[d] + (step[d] / 2 - r) * (2 * unif(rng) - 1);
+        s.particles.push_back({c, r, id++, Role::Matrix, true});
+      }
+  for (double x = bar_r; x <= 1 - bar_r; x += 1.6 * bar_r)
+    s.particles.push_back({{x, 0.25, 0.25}, bar_r, id++, Role::Rebar, true});
+  return s;
+}
+
+Settings default_settings()
+{
+  Settings st;
+  st.rmin = kRmin;
+  st.rmax = kRmax;
+  st.search = 2 * kRmax;
+  return st;
+}
+
+void mark(Scene &s, double tol)
+{
+  for (std::size_t i : find_targets(s.particles, tol)) s.particles[i].role = Role::Target;
+}
+
+// The scene after the placements: relocated spheres moved, unplaced ones
+// deleted (or kept).
+std::vector<Particle> apply(const Scene &s, const std::vector<Placement> &placements, bool keep)
+{
+  std::vector<Particle> out = s.particles;
+  std::vector<bool> gone(out.size(), false);
+  for (const Placement &p : placements) {
+    if (p.placed) {
+      out[p.index].x = p.x;
+      out[p.index].r = p.r;
+      out[p.index].role = Role::Matrix;
+    } else if (keep) {
+      out[p.index].role = Role::Matrix;
+    } else {
+      gone[p.index] = true;
+    }
+  }
+  std::vector<Particle> kept;
+  for (std::size_t i = 0; i < out.size(); ++i)
+    if (!gone[i]) kept.push_back(out[i]);
+  return kept;
+}
+
+// Largest overlap, relative to min radius, of a moved sphere with any other
+// sphere (brute force: the reference the engine's grid is checked against).
+double worst_overlap_of_moved(const std::vector<Particle> &after, const Scene &before)
+{
+  double worst = -INFINITY;
+  for (std::size_t i = 0; i < after.size(); ++i) {
+    const Particle &p = after[i];
+    bool moved = true;
+    for (const Particle &q : before.particles)
+      if (q.id == p.id) moved = q.x.x != p.x.x || q.x.y != p.x.y || q.x.z != p.x.z || q.r != p.r;
+    if (!moved) continue;
+    for (std::size_t j = 0; j < after.size(); ++j) {
+      if (j == i) continue;
+      const Particle &q = after[j];
+      worst = std::max(worst, (p.r + q.r - norm(p.x - q.x)) / std::min(p.r, q.r));
+    }
+  }
+  return worst;
+}
+
+}    // namespace
+
+TEST(Engine, RelocatesBarOverlapsWithoutOverlap)
+{
+  Scene s = make_scene(1);
+  const Settings st = default_settings();
+  mark(s, st.tol);
+  Stats stats;
+  const auto placements = relocate_targets(s.particles, st, s.domain, false, stats);
+  ASSERT_GT(stats.targets, 10);
+  EXPECT_EQ(stats.targets, static_cast<std::int64_t>(placements.size()));
+  EXPECT_EQ(stats.targets, stats.relocated + stats.unplaced);
+  // A sparse packing has room for nearly every target.
+  EXPECT_GE(stats.relocated, 0.9 * stats.targets);
+  const auto after = apply(s, placements, false);
+  EXPECT_LE(worst_overlap_of_moved(after, s), st.tol);
+  EXPECT_LE(stats.max_overlap, st.tol);
+  for (const Placement &p : placements) {
+    if (!p.placed) continue;
+    EXPECT_GE(p.r, st.rmin);
+    EXPECT_LE(p.r, st.rmax);
+    // Wholly inside the non-periodic box.
+    for (int d = 0; d < 3; ++d) {
+      EXPECT_GE(p.x[d] - p.r, s.domain.lo[d]);
+      EXPECT_LE(p.x[d] + p.r, s.domain.hi[d]);
+    }
+    // Within the neighbourhood searched.
+    EXPECT_LE(norm(p.x - s.particles[p.index].x), s.particles[p.index].r + st.search + 1e-12);
+  }
+  // The counts follow from the placements.
+  std::int64_t placed = 0;
+  double volume = 0;
+  for (const Placement &p : placements)
+    if (p.placed) {
+      ++placed;
+      volume += 4.0 / 3.0 * M_PI * p.r * p.r * p.r;
+    }
+  EXPECT_EQ(placed, stats.relocated);
+  EXPECT_NEAR(volume, stats.volume_after, 1e-12);
+}
+
+TEST(Engine, TargetsAreExactlyTheSpheresOverlappingRebar)
+{
+  Scene s = make_scene(2);
+  const double tol = 1e-6;
+  const auto targets = find_targets(s.particles, tol);
+  std::size_t expected = 0;
+  for (const Particle &p : s.particles) {
+    if (p.role == Role::Rebar) continue;
+    bool hit = false;
+    for (const Particle &q : s.particles)
+      if (q.role == Role::Rebar && p.r + q.r - norm(p.x - q.x) > tol * std::min(p.r, q.r)) hit = true;
+    expected += hit;
+  }
+  EXPECT_EQ(targets.size(), expected);
+  EXPECT_GT(expected, 0u);
+}
+
+TEST(Engine, ChooseClosestKeepsSizeBetterThanFirst)
+{
+  Scene s = make_scene(3);
+  Settings st = default_settings();
+  mark(s, st.tol);
+  double err[2];
+  for (Choice c : {Choice::First, Choice::Closest}) {
+    st.choice = c;
+    Stats stats;
+    const auto placements = relocate_targets(s.particles, st, s.domain, false, stats);
+    double sum = 0;
+    int n = 0;
+    for (const Placement &p : placements)
+      if (p.placed) {
+        sum += std::fabs(p.r - s.particles[p.index].r);
+        ++n;
+      }
+    ASSERT_GT(n, 0);
+    err[c == Choice::Closest] = sum / n;
+    const auto after = apply(s, placements, false);
+    EXPECT_LE(worst_overlap_of_moved(after, s), st.tol);
+  }
+  EXPECT_LT(err[1], err[0]);
+}
+
+TEST(Engine, SameInputSameOutput)
+{
+  Scene s = make_scene(4);
+  const Settings st = default_settings();
+  mark(s, st.tol);
+  Stats a, b;
+  const auto pa = relocate_targets(s.particles, st, s.domain, false, a);
+  const auto pb = relocate_targets(s.particles, st, s.domain, false, b);
+  ASSERT_EQ(pa.size(), pb.size());
+  for (std::size_t i = 0; i < pa.size(); ++i) {
+    EXPECT_EQ(pa[i].index, pb[i].index);
+    EXPECT_EQ(pa[i].placed, pb[i].placed);
+    EXPECT_EQ(pa[i].x.x, pb[i].x.x);
+    EXPECT_EQ(pa[i].x.y, pb[i].x.y);
+    EXPECT_EQ(pa[i].x.z, pb[i].x.z);
+    EXPECT_EQ(pa[i].r, pb[i].r);
+  }
+  EXPECT_EQ(a.solves, b.solves);
+}
+
+TEST(Engine, NoTargetsNoWork)
+{
+  Scene s = make_scene(5, 0.03);
+  for (Particle &p : s.particles)
+    if (p.role == Role::Rebar) p.x.y = 5;    // bar moved out of the packing
+  const Settings st = default_settings();
+  mark(s, st.tol);
+  Stats stats;
+  EXPECT_TRUE(relocate_targets(s.particles, st, s.domain, false, stats).empty());
+  EXPECT_EQ(stats.targets, 0);
+  EXPECT_EQ(stats.solves, 0);
+}
+
+// A packing with no room (radius range that no void fits): every target is
+// unplaced; `keep` leaves them present, so later targets avoid them.
+TEST(Engine, UnplacedAreCountedAndKeptOnRequest)
+{
+  Scene s = make_scene(6);
+  Settings st = default_settings();
+  st.rmin = st.rmax = 0.2;    // nothing that large fits anywhere
+  mark(s, st.tol);
+  Stats stats;
+  const auto placements = relocate_targets(s.particles, st, s.domain, true, stats);
+  EXPECT_GT(stats.targets, 0);
+  EXPECT_EQ(stats.relocated, 0);
+  EXPECT_EQ(stats.unplaced, stats.targets);
+  EXPECT_EQ(stats.volume_after, 0);
+}
+
+// Tries bound the work: at most `tries` kernel solves per target.
+TEST(Engine, TriesBoundTheSolves)
+{
+  Scene s = make_scene(7);
+  Settings st = default_settings();
+  st.tries = 5;
+  st.choice = Choice::Closest;
+  mark(s, st.tol);
+  Stats stats;
+  relocate_targets(s.particles, st, s.domain, false, stats);
+  EXPECT_GT(stats.targets, 0);
+  EXPECT_LE(stats.solves, 5 * stats.targets);
+}
+
+// Periodic x: the bar crosses the periodic boundary and the process sees its
+// own atoms' periodic images as ghosts (as one LAMMPS process does). New
+// spheres must not overlap anything under the minimum image.
+TEST(Engine, PeriodicImagesAreRespected)
+{
+  Scene s = make_scene(8);
+  s.domain.periodic[0] = true;
+  const double cut = 0.2;
+  s.domain.view_lo = {-cut, -cut, -cut};
+  s.domain.view_hi = {1 + cut, 0.5 + cut, 0.5 + cut};
+  std::vector<Particle> with_ghosts = s.particles;
+  for (const Particle &p : s.particles)
+    for (int shift : {-1, 1}) {
+      Particle g = p;
+      g.x.x += shift;
+      g.owned = false;
+      if (g.x.x >= -cut && g.x.x <= 1 + cut) with_ghosts.push_back(g);
+    }
+  s.particles = with_ghosts;
+  Settings st = default_settings();
+  mark(s, st.tol);
+  // Ghost copies of owned targets are targets too (the host forwards that).
+  std::vector<std::int64_t> target_ids;
+  for (const Particle &p : s.particles)
+    if (p.role == Role::Target) target_ids.push_back(p.id);
+  for (Particle &p : s.particles)
+    for (std::int64_t id : target_ids)
+      if (p.id == id) p.role = Role::Target;
+  Stats stats;
+  const auto placements = relocate_targets(s.particles, st, s.domain, false, stats);
+  ASSERT_GT(stats.relocated, 0);
+  // Final owned spheres, wrapped into the box, checked under minimum image.
+  std::vector<Particle> owned;
+  for (const Particle &p : apply(s, placements, false))
+    if (p.owned) owned.push_back(p);
+  // Pre-existing packing has no overlaps except matrix-on-rebar targets that
+  // were deleted; the bar's own spheres overlap each other (a clump).
+  double worst_matrix = -INFINITY;
+  for (std::size_t i = 0; i < owned.size(); ++i)
+    for (std::size_t j = 0; j < owned.size(); ++j) {
+      if (i == j || owned[i].role == Role::Rebar) continue;
+      Vec3 d = owned[i].x - owned[j].x;
+      d.x -= std::round(d.x);
+      worst_matrix = std::max(
+          worst_matrix, (owned[i].r + owned[j].r - norm(d)) / std::min(owned[i].r, owned[j].r));
+    }
+  EXPECT_LE(worst_matrix, st.tol);
+}
+
+TEST(Engine, RequiredReachCoversNeighbourhood)
+{
+  Settings st = default_settings();
+  EXPECT_DOUBLE_EQ(required_reach(st, kRmax, 0.1), kRmax + st.search + st.rmax + 0.1);
+}
+
+TEST(Engine, SpheresNearRebarFindsOnlyThoseWithinMargin)
+{
+  // A rebar sphere at the origin (r = 1) and matrix spheres along x.
+  double pos[6][3] = {{0, 0, 0}, {2.5, 0, 0}, {3.4, 0, 0}, {3.6, 0, 0}, {-3.4, 0, 0}, {0, 10, 0}};
+  const double *x[6];
+  for (int i = 0; i < 6; ++i) x[i] = pos[i];
+  const double radius[6] = {1, 0.5, 0.5, 0.5, 0.5, 0.5};
+  const unsigned char rebar[6] = {1, 0, 0, 0, 0, 0};
+  // Gaps to the rebar surface: 1.0, 1.9, 2.1, 1.9, 8.5.
+  const auto near = spheres_near_rebar(6, x, radius, rebar, 2.0);
+  EXPECT_EQ(near, (std::vector<int>{0, 1, 2, 4}));
+  const unsigned char none[6] = {0, 0, 0, 0, 0, 0};
+  EXPECT_TRUE(spheres_near_rebar(6, x, radius, none, 2.0).empty());
+}

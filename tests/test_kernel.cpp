@@ -1,0 +1,325 @@
+// Kernel tests: spheres tangent to four spheres. Each test states the
+// tolerance it asserts and why.
+#include "tangent_sphere.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using namespace reinforce;
+
+namespace {
+
+using Solver = int (*)(const Sphere[4], Sphere[2], int);
+
+// Four spheres around a known sphere s, touching it at the given directions.
+void around(const Sphere &s, const Vec3 dir[4], const double radius[4], Sphere in[4])
+{
+  for (int i = 0; i < 4; ++i) in[i] = {s.c + ((s.r + radius[i]) / norm(dir[i])) * dir[i], radius[i]};
+}
+
+// Distance from the known sphere to the nearest returned one, relative to r.
+double miss(const Sphere &known, const Sphere *out, int n)
+{
+  double best = INFINITY;
+  for (int k = 0; k < n; ++k)
+    best = std::min(best, (norm(out[k].c - known.c) + std::fabs(out[k].r - known.r)) / known.r);
+  return best;
+}
+
+void expect_clean(const Sphere in[4], const Sphere *out, int n)
+{
+  ASSERT_GE(n, 0);
+  ASSERT_LE(n, 2);
+  for (int k = 0; k < n; ++k) {
+    EXPECT_TRUE(is_finite(out[k].c));
+    EXPECT_TRUE(std::isfinite(out[k].r));
+    EXPECT_GT(out[k].r, 0);
+    EXPECT_LE(tangency_residual(in, out[k]), kAcceptResidual);
+  }
+}
+
+Vec3 random_unit(std::mt19937_64 &rng)
+{
+  std::normal_distribution<double> g;
+  Vec3 v{g(rng), g(rng), g(rng)};
+  return (1.0 / norm(v)) * v;
+}
+
+// Regular tetrahedron with edge e, centred at the origin.
+void tetrahedron(double e, double radius, Sphere in[4])
+{
+  const double a = e / (2 * std::sqrt(2.0));
+  const Vec3 v[4] = {{a, a, a}, {a, -a, -a}, {-a, a, -a}, {-a, -a, a}};
+  for (int i = 0; i < 4; ++i) in[i] = {v[i], radius};
+}
+
+}    // namespace
+
+// Equal touching spheres on a regular tetrahedron: the one external solution
+// sits at the centroid with r = e*sqrt(6)/4 - r_i. Tolerance 1e-13: a
+// well-conditioned case, exact up to a few roundings.
+TEST(Kernel, RegularTetrahedronEqualRadii)
+{
+  for (double edge : {2.0, 1.8, 2.5}) {    // touching, overlapping, apart
+    Sphere in[4], out[2];
+    tetrahedron(edge, 1.0, in);
+    const double expected = edge * std::sqrt(6.0) / 4 - 1.0;
+    for (Solver solve : {Solver(tangent_spheres_inversion), Solver(tangent_spheres_algebraic)}) {
+      const int n = solve(in, out, 0);
+      expect_clean(in, out, n);
+      ASSERT_EQ(n, 1) << "edge " << edge;
+      EXPECT_NEAR(out[0].r, expected, 1e-13);
+      EXPECT_LT(norm(out[0].c), 1e-13);
+    }
+  }
+}
+
+// Four points (radius 0): the tangent sphere is the circumsphere.
+TEST(Kernel, PointsGiveCircumsphere)
+{
+  Sphere in[4], out[2];
+  tetrahedron(2.0, 0.0, in);
+  const int n = tangent_spheres_inversion(in, out, 0);
+  ASSERT_EQ(n, 1);
+  EXPECT_NEAR(out[0].r, 2.0 * std::sqrt(6.0) / 4, 1e-13);
+}
+
+// Randomized property: build four spheres around a chosen one; the kernel
+// must give it back. Well-conditioned draws (directions spread, radius ratio
+// <= 3): residual <= 1e-12 relative with one Newton step, and the raw
+// inversion within 1e-8 (it amplifies rounding by the condition of the
+// triangle of inverted centres: 5e-10 was seen once in 20000 draws). A draw is well-conditioned when the smallest angle
+// between directions is > 20 degrees.
+TEST(Kernel, RecoversKnownSphereRandomized)
+{
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> unif(1.0, 3.0);
+  int tried = 0, missed_raw = 0, missed_polished = 0;
+  double worst_polished = 0;
+  while (tried < 20000) {
+    Vec3 dir[4];
+    for (Vec3 &d : dir) d = random_unit(rng);
+    bool spread = true;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) spread = spread && dot(dir[i], dir[j]) < std::cos(0.35);
+    if (!spread) continue;
+    ++tried;
+    const double radius[4] = {unif(rng), unif(rng), unif(rng), unif(rng)};
+    const Sphere known{{unif(rng), -unif(rng), unif(rng)}, unif(rng)};
+    Sphere in[4], out[2];
+    around(known, dir, radius, in);
+    int n = tangent_spheres_inversion(in, out, 0);
+    expect_clean(in, out, n);
+    if (miss(known, out, n) > 1e-8) ++missed_raw;
+    n = tangent_spheres_inversion(in, out, 1);
+    expect_clean(in, out, n);
+    const double m = miss(known, out, n);
+    if (m > 1e-9) {
+      ++missed_polished;
+    } else {
+      for (int k = 0; k < n; ++k)
+        if ((norm(out[k].c - known.c) + std::fabs(out[k].r - known.r)) / known.r <= 1e-9)
+          worst_polished = std::max(worst_polished, tangency_residual(in, out[k]));
+    }
+  }
+  EXPECT_EQ(missed_raw, 0);
+  EXPECT_EQ(missed_polished, 0);
+  EXPECT_LE(worst_polished, 1e-12);
+}
+
+// The algebraic reference on the same kind of draws, as a check of the
+// reference itself.
+TEST(Kernel, AlgebraicReferenceRecoversKnownSphere)
+{
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> unif(0.5, 2.0);
+  for (int t = 0; t < 2000; ++t) {
+    Vec3 dir[4] = {{1, 0.1, 0.2}, {-0.5, 0.9, 0.1}, {-0.4, -0.8, 0.3}, {0.1, 0.1, -1}};
+    for (Vec3 &d : dir) d = d + 0.3 * random_unit(rng);
+    const double radius[4] = {unif(rng), unif(rng), unif(rng), unif(rng)};
+    const Sphere known{{0, 0, 0}, unif(rng)};
+    Sphere in[4], out[2];
+    around(known, dir, radius, in);
+    const int n = tangent_spheres_algebraic(in, out, 0);
+    expect_clean(in, out, n);
+    EXPECT_LE(miss(known, out, n), 1e-10);
+  }
+}
+
+// Radius ratios up to 1e3, both ways: a small sphere among big ones and a
+// big one among small ones. Relative residual <= 1e-12 after polish.
+TEST(Kernel, RadiusRatioThousand)
+{
+  const Vec3 dir[4] = {{1, 0.2, 0.1}, {-0.6, 0.8, 0.2}, {-0.5, -0.7, 0.4}, {0.1, 0.1, -1}};
+  for (double big : {1e3, 1e-3}) {
+    const Sphere known{{0.3, -0.2, 0.1}, 1.0};
+    const double radius[4] = {big, 0.7 * big, 1.3 * big, big};
+    Sphere in[4], out[2];
+    around(known, dir, radius, in);
+    const int n = tangent_spheres_inversion(in, out, 1);
+    expect_clean(in, out, n);
+    EXPECT_LE(miss(known, out, n), 1e-9) << "ratio " << big;
+    for (int k = 0; k < n; ++k) EXPECT_LE(tangency_residual(in, out[k]), 1e-12);
+  }
+}
+
+// Offset 1e6 from the origin with radii ~1: the answer cannot be stored
+// better than 1e6 * 2.2e-16 = 2.2e-10 absolute, so the relative tolerance is
+// 1e-9; at the origin the same case gives 1e-12.
+TEST(Kernel, FarFromOrigin)
+{
+  const Vec3 dir[4] = {{1, 0.2, 0.1}, {-0.6, 0.8, 0.2}, {-0.5, -0.7, 0.4}, {0.1, 0.1, -1}};
+  const double radius[4] = {1.0, 1.5, 0.8, 1.2};
+  for (double offset : {0.0, 1e6, -1e6}) {
+    const Sphere known{{offset + 0.1, offset - 0.3, offset + 0.2}, 0.9};
+    Sphere in[4], out[2];
+    around(known, dir, radius, in);
+    for (int steps : {0, 1}) {
+      const int n = tangent_spheres_inversion(in, out, steps);
+      expect_clean(in, out, n);
+      const double tol = offset == 0 ? 1e-12 : 1e-9;
+      EXPECT_LE(miss(known, out, n), tol) << "offset " << offset << " steps " << steps;
+    }
+  }
+}
+
+// SI units of fine powders: radii of 1e-6 m. The local frame is scaled, so
+// the relative accuracy is that of a unit scene: 1e-12.
+TEST(Kernel, MicroRadii)
+{
+  const Vec3 dir[4] = {{1, 0.2, 0.1}, {-0.6, 0.8, 0.2}, {-0.5, -0.7, 0.4}, {0.1, 0.1, -1}};
+  const double s = 1e-6;
+  const double radius[4] = {1.0 * s, 1.5 * s, 0.8 * s, 1.2 * s};
+  const Sphere known{{2e-5, -1e-5, 3e-6}, 0.9 * s};
+  Sphere in[4], out[2];
+  around(known, dir, radius, in);
+  for (Solver solve : {Solver(tangent_spheres_inversion), Solver(tangent_spheres_algebraic)}) {
+    const int n = solve(in, out, 1);
+    expect_clean(in, out, n);
+    EXPECT_LE(miss(known, out, n), 1e-12);
+  }
+}
+
+// Centres nearly coplanar (the known sphere touches four spheres around its
+// equator, tilted by delta): the algebraic system becomes singular and the
+// two mirror solutions merge into a double root. The inversion still finds
+// the sphere: a double root loses half the digits, so the tolerance is 1e-6
+// (sqrt of the unit roundoff times a margin).
+TEST(Kernel, NearlyCoplanarCentres)
+{
+  for (double delta : {1e-3, 1e-6, 1e-9, 0.0}) {
+    const Vec3 dir[4] = {{1, 0, delta}, {0, 1, -delta}, {-1, 0.1, delta}, {0.1, -1, -delta}};
+    const double radius[4] = {1.0, 1.2, 0.9, 1.1};
+    const Sphere known{{0, 0, 0}, 0.5};
+    Sphere in[4], out[2];
+    around(known, dir, radius, in);
+    int n = tangent_spheres_inversion(in, out, 1);
+    expect_clean(in, out, n);
+    EXPECT_LE(miss(known, out, n), 1e-6) << "delta " << delta;
+    n = tangent_spheres_algebraic(in, out, 1);
+    expect_clean(in, out, n);    // may lose the case, never returns garbage
+    if (delta == 0.0) {
+      EXPECT_EQ(n, 0);
+    }
+  }
+}
+
+// Inverted centres (nearly) collinear: build the inverted picture directly,
+// three inverted spheres on a line through nothing special, then map back.
+// On the line exactly there is no isolated solution; near it the answer is
+// ill-conditioned. Whatever is returned must be a true solution.
+TEST(Kernel, NearlyCollinearInvertedCentres)
+{
+  for (double eps : {1e-2, 1e-5, 1e-8, 1e-12, 0.0}) {
+    const double m = 0.5;
+    const Vec3 q[3] = {{1, 0.5, 0.2}, {2, 0.5 + eps, 0.2}, {3, 0.5, 0.2 - eps}};
+    const double sigma[3] = {0.1, 0.15, 0.05};
+    Sphere in[4];
+    in[0] = {{0, 0, 0}, m};
+    for (int j = 0; j < 3; ++j) {
+      const double power = norm2(q[j]) - sigma[j] * sigma[j];
+      in[j + 1] = {(1.0 / power) * q[j], sigma[j] / power + m};
+    }
+    Sphere out[2];
+    int n = tangent_spheres_inversion(in, out, 1);
+    expect_clean(in, out, n);
+    if (eps == 0.0) {
+      EXPECT_EQ(n, 0);
+    }
+    n = tangent_spheres_algebraic(in, out, 1);
+    expect_clean(in, out, n);
+  }
+}
+
+// Equal spheres with cocircular centres: the inverted centres are exactly
+// collinear and the centres coplanar: both methods must say "none".
+TEST(Kernel, CocircularEqualSpheresHaveNoIsolatedSolution)
+{
+  Sphere in[4], out[2];
+  for (int i = 0; i < 4; ++i) {
+    const double a = 0.4 + 1.3 * i;
+    in[i] = {{std::cos(a), std::sin(a), 0}, 0.2};
+  }
+  EXPECT_EQ(tangent_spheres_inversion(in, out, 1), 0);
+  EXPECT_EQ(tangent_spheres_algebraic(in, out, 1), 0);
+}
+
+// Overlapping input spheres: the neighbours overlap each other by up to 30%
+// of their radius, the known sphere still touches each once.
+TEST(Kernel, OverlappingInputSpheres)
+{
+  const Vec3 dir[4] = {{1, 0.3, 0.1}, {0.6, 0.8, 0.2}, {0.5, -0.7, 0.4}, {0.9, 0.1, -0.5}};
+  const double radius[4] = {1.0, 1.2, 0.9, 1.1};
+  const Sphere known{{0, 0, 0}, 0.6};
+  Sphere in[4], out[2];
+  around(known, dir, radius, in);
+  ASSERT_LT(norm(in[0].c - in[1].c), in[0].r + in[1].r);    // they do overlap
+  const int n = tangent_spheres_inversion(in, out, 1);
+  expect_clean(in, out, n);
+  EXPECT_LE(miss(known, out, n), 1e-12);
+}
+
+// Degenerate and invalid inputs: no solution, never NaN or infinity.
+TEST(Kernel, DegenerateInputsGiveNothing)
+{
+  Sphere out[2];
+  const double nan = std::nan(""), inf = INFINITY;
+  const Sphere cases[][4] = {
+      {{{0, 0, 0}, 1}, {{0, 0, 0}, 1}, {{0, 0, 0}, 1}, {{0, 0, 0}, 1}},    // all equal
+      {{{0, 0, 0}, 1}, {{1, 0, 0}, 1}, {{2, 0, 0}, 1}, {{3, 0, 0}, 1}},    // collinear
+      {{{0, 0, 0}, 1}, {{1, 0, 0}, 1}, {{0, 1, 0}, 1}, {{0, 0, nan}, 1}},  // NaN
+      {{{0, 0, 0}, 1}, {{1, 0, 0}, 1}, {{0, 1, 0}, 1}, {{0, 0, inf}, 1}},  // infinity
+      {{{0, 0, 0}, 1}, {{1, 0, 0}, -1}, {{0, 1, 0}, 1}, {{0, 0, 1}, 1}},   // negative radius
+      {{{0, 0, 0}, 0.1}, {{0.2, 0, 0}, 5}, {{0, 3, 0}, 1}, {{0, 0, 3}, 1}}, // one inside another
+      {{{0, 0, 0}, 1e300}, {{1, 0, 0}, 1e300}, {{0, 1, 0}, 1e300}, {{0, 0, 1}, 1e300}},
+  };
+  for (const auto &in : cases) {
+    for (Solver solve : {Solver(tangent_spheres_inversion), Solver(tangent_spheres_algebraic)}) {
+      for (int steps : {0, 2}) {
+        const int n = solve(in, out, steps);
+        expect_clean(in, out, n);
+      }
+    }
+  }
+  EXPECT_EQ(tangent_spheres_inversion(cases[0], out, 0), 0);
+  EXPECT_EQ(tangent_spheres_inversion(cases[1], out, 0), 0);
+  EXPECT_EQ(tangent_spheres_inversion(cases[2], out, 0), 0);
+  EXPECT_EQ(tangent_spheres_inversion(cases[5], out, 0), 0);
+}
+
+// Polish: from a perturbed start Newton converges back to the tangent
+// sphere (quadratically: two steps reach 1e-13 from 1e-3).
+TEST(Kernel, NewtonPolishConverges)
+{
+  Sphere in[4];
+  tetrahedron(2.0, 1.0, in);
+  Sphere s{{1e-3, -2e-3, 1e-3}, 2.0 * std::sqrt(6.0) / 4 - 1.0 + 1e-3};
+  const double before = tangency_residual(in, s);
+  ASSERT_TRUE(polish_tangent_sphere(in, s, 3));
+  EXPECT_LT(tangency_residual(in, s), 1e-13);
+  EXPECT_GT(before, 1e-3);
+  Sphere bad{{0, 0, 0}, -1};
+  EXPECT_FALSE(polish_tangent_sphere(in, bad, 2));
+}
