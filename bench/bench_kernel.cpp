@@ -38,7 +38,8 @@ Case around(const Sphere &s, const Vec3 dir[4], const double radius[4])
 {
   Case c;
   c.known = s;
-  for (int i = 0; i < 4; ++i) c.in[i] = {s.c + ((s.r + radius[i]) / norm(dir[i])) * dir[i], radius[i]};
+  for (int i = 0; i < 4; ++i)
+    c.in[i] = {s.c + ((s.r + radius[i]) / norm(dir[i])) * dir[i], radius[i]};
   return c;
 }
 
@@ -63,9 +64,9 @@ std::vector<Case> well_conditioned(int n, std::mt19937_64 &rng)
 // The stiff families of DESIGN.md section 3, in equal shares: radius ratio
 // 1e3 (both ways), nearly coplanar centres, clustered directions (nearly
 // collinear inverted centres), offset 1e6, radii 1e-6.
-const char *const kFamilies[6] = {"neighbours 1e3 x larger", "sphere 1e3 x larger",
-                                  "nearly coplanar centres", "clustered directions",
-                                  "offset 1e6",              "radii 1e-6"};
+const char *const kFamilies[6] = {
+    "neighbours 1e3 x larger", "sphere 1e3 x larger", "nearly coplanar centres",
+    "clustered directions",    "offset 1e6",          "radii 1e-6"};
 
 // family < 0: all families in turn; else that family only.
 std::vector<Case> stiff(int n, std::mt19937_64 &rng, int family = -1)
@@ -78,22 +79,28 @@ std::vector<Case> stiff(int n, std::mt19937_64 &rng, int family = -1)
     double radius[4] = {u(rng), u(rng), u(rng), u(rng)};
     Sphere known{{u(rng), u(rng), u(rng)}, u(rng)};
     switch (family < 0 ? k % 6 : family) {
-      case 0: for (double &r : radius) r *= 1e3; break;
-      case 1: known.r *= 1e3; break;
-      case 2:
-        for (Vec3 &d : dir) d.z = 1e-7 * s(rng);
-        break;
-      case 3: {
-        const Vec3 axis = random_unit(rng);
-        for (Vec3 &d : dir) d = axis + 0.05 * random_unit(rng);
-        break;
-      }
-      case 4: known.c = known.c + Vec3{1e6, -1e6, 1e6}; break;
-      case 5:
-        for (double &r : radius) r *= 1e-6;
-        known.r *= 1e-6;
-        known.c = 1e-6 * known.c;
-        break;
+    case 0:
+      for (double &r : radius) r *= 1e3;
+      break;
+    case 1:
+      known.r *= 1e3;
+      break;
+    case 2:
+      for (Vec3 &d : dir) d.z = 1e-7 * s(rng);
+      break;
+    case 3: {
+      const Vec3 axis = random_unit(rng);
+      for (Vec3 &d : dir) d = axis + 0.05 * random_unit(rng);
+      break;
+    }
+    case 4:
+      known.c = known.c + Vec3{1e6, -1e6, 1e6};
+      break;
+    case 5:
+      for (double &r : radius) r *= 1e-6;
+      known.r *= 1e-6;
+      known.c = 1e-6 * known.c;
+      break;
     }
     out.push_back(around(known, dir, radius));
   }
@@ -119,7 +126,8 @@ Row measure(const Variant &v, const std::vector<Case> &cases, int passes)
     const int n = v.solve(c.in, out, v.newton_steps);
     double best = INFINITY, res = INFINITY;
     for (int k = 0; k < n; ++k) {
-      const double miss = (norm(out[k].c - c.known.c) + std::fabs(out[k].r - c.known.r)) / c.known.r;
+      const double miss =
+          (norm(out[k].c - c.known.c) + std::fabs(out[k].r - c.known.r)) / c.known.r;
       if (miss < best) {
         best = miss;
         res = tangency_residual(c.in, out[k]);

@@ -161,7 +161,8 @@ TEST(Engine, TargetsAreExactlyTheSpheresOverlappingRebar)
     if (p.role == Role::Rebar) continue;
     bool hit = false;
     for (const Particle &q : s.particles)
-      if (q.role == Role::Rebar && p.r + q.r - norm(p.x - q.x) > tol * std::min(p.r, q.r)) hit = true;
+      if (q.role == Role::Rebar && p.r + q.r - norm(p.x - q.x) > tol * std::min(p.r, q.r))
+        hit = true;
     expected += hit;
   }
   EXPECT_EQ(targets.size(), expected);
@@ -299,8 +300,8 @@ TEST(Engine, PeriodicImagesAreRespected)
       if (i == j || owned[i].role == Role::Rebar) continue;
       Vec3 d = owned[i].x - owned[j].x;
       d.x -= std::round(d.x);
-      worst_matrix = std::max(
-          worst_matrix, (owned[i].r + owned[j].r - norm(d)) / std::min(owned[i].r, owned[j].r));
+      worst_matrix = std::max(worst_matrix, (owned[i].r + owned[j].r - norm(d)) /
+                                                std::min(owned[i].r, owned[j].r));
     }
   EXPECT_LE(worst_matrix, st.tol);
 }

@@ -16,7 +16,8 @@ using Solver = int (*)(const Sphere[4], Sphere[2], int);
 // Four spheres around a known sphere s, touching it at the given directions.
 void around(const Sphere &s, const Vec3 dir[4], const double radius[4], Sphere in[4])
 {
-  for (int i = 0; i < 4; ++i) in[i] = {s.c + ((s.r + radius[i]) / norm(dir[i])) * dir[i], radius[i]};
+  for (int i = 0; i < 4; ++i)
+    in[i] = {s.c + ((s.r + radius[i]) / norm(dir[i])) * dir[i], radius[i]};
 }
 
 // Distance from the known sphere to the nearest returned one, relative to r.
@@ -90,8 +91,8 @@ TEST(Kernel, PointsGiveCircumsphere)
 // must give it back. Well-conditioned draws (directions spread, radius ratio
 // <= 3): residual <= 1e-12 relative with one Newton step, and the raw
 // inversion within 1e-8 (it amplifies rounding by the condition of the
-// triangle of inverted centres: 5e-10 was seen once in 20000 draws). A draw is well-conditioned when the smallest angle
-// between directions is > 20 degrees.
+// triangle of inverted centres: 5e-10 was seen once in 20000 draws). A draw is well-conditioned
+// when the smallest angle between directions is > 20 degrees.
 TEST(Kernel, RecoversKnownSphereRandomized)
 {
   std::mt19937_64 rng(42);
@@ -287,12 +288,12 @@ TEST(Kernel, DegenerateInputsGiveNothing)
   Sphere out[2];
   const double nan = std::nan(""), inf = INFINITY;
   const Sphere cases[][4] = {
-      {{{0, 0, 0}, 1}, {{0, 0, 0}, 1}, {{0, 0, 0}, 1}, {{0, 0, 0}, 1}},    // all equal
-      {{{0, 0, 0}, 1}, {{1, 0, 0}, 1}, {{2, 0, 0}, 1}, {{3, 0, 0}, 1}},    // collinear
-      {{{0, 0, 0}, 1}, {{1, 0, 0}, 1}, {{0, 1, 0}, 1}, {{0, 0, nan}, 1}},  // NaN
-      {{{0, 0, 0}, 1}, {{1, 0, 0}, 1}, {{0, 1, 0}, 1}, {{0, 0, inf}, 1}},  // infinity
-      {{{0, 0, 0}, 1}, {{1, 0, 0}, -1}, {{0, 1, 0}, 1}, {{0, 0, 1}, 1}},   // negative radius
-      {{{0, 0, 0}, 0.1}, {{0.2, 0, 0}, 5}, {{0, 3, 0}, 1}, {{0, 0, 3}, 1}}, // one inside another
+      {{{0, 0, 0}, 1}, {{0, 0, 0}, 1}, {{0, 0, 0}, 1}, {{0, 0, 0}, 1}},        // all equal
+      {{{0, 0, 0}, 1}, {{1, 0, 0}, 1}, {{2, 0, 0}, 1}, {{3, 0, 0}, 1}},        // collinear
+      {{{0, 0, 0}, 1}, {{1, 0, 0}, 1}, {{0, 1, 0}, 1}, {{0, 0, nan}, 1}},      // NaN
+      {{{0, 0, 0}, 1}, {{1, 0, 0}, 1}, {{0, 1, 0}, 1}, {{0, 0, inf}, 1}},      // infinity
+      {{{0, 0, 0}, 1}, {{1, 0, 0}, -1}, {{0, 1, 0}, 1}, {{0, 0, 1}, 1}},       // negative radius
+      {{{0, 0, 0}, 0.1}, {{0.2, 0, 0}, 5}, {{0, 3, 0}, 1}, {{0, 0, 3}, 1}},    // one inside another
       {{{0, 0, 0}, 1e300}, {{1, 0, 0}, 1e300}, {{0, 1, 0}, 1e300}, {{0, 0, 1}, 1e300}},
   };
   for (const auto &in : cases) {

@@ -13,7 +13,7 @@
 namespace reinforce {
 
 class CellGrid {
- public:
+public:
   explicit CellGrid(double cell_size);
 
   void insert(Vec3 x, int item);
@@ -36,8 +36,11 @@ class CellGrid {
         }
   }
 
- private:
-  std::int64_t coord(double v) const { return static_cast<std::int64_t>(std::floor(v * inv_cell_)); }
+private:
+  std::int64_t coord(double v) const
+  {
+    return static_cast<std::int64_t>(std::floor(v * inv_cell_));
+  }
   static std::uint64_t key(std::int64_t i, std::int64_t j, std::int64_t k);
 
   double inv_cell_;

@@ -13,7 +13,10 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-double ball_volume(double r) { return 4.0 / 3.0 * kPi * r * r * r; }
+double ball_volume(double r)
+{
+  return 4.0 / 3.0 * kPi * r * r * r;
+}
 
 struct Candidate {
   double gap;
@@ -30,7 +33,7 @@ struct Candidate {
 // The spheres a process sees while it relocates: the particles, then the
 // relocated spheres and their periodic images as they are added.
 class View {
- public:
+public:
   View(const std::vector<Particle> &particles, double cell) : grid_(cell)
   {
     for (const Particle &p : particles) add(p.x, p.r, p.id, p.role != Role::Target);
@@ -77,7 +80,7 @@ class View {
   Sphere sphere(int j) const { return {x_[j], r_[j]}; }
   void set_present(int j) { present_[j] = true; }
 
- private:
+private:
   CellGrid grid_;
   std::vector<Vec3> x_;
   std::vector<double> r_;
@@ -242,8 +245,7 @@ std::vector<Placement> relocate_targets(const std::vector<Particle> &particles,
         const Sphere &s = found[k];
         if (s.r < settings.rmin || s.r > settings.rmax) continue;
         if (norm(s.c - target.x) > max_shift || !admissible(s.c, s.r, domain)) continue;
-        const double score =
-            settings.choice == Choice::Closest ? std::fabs(s.r - target.r) : 0.0;
+        const double score = settings.choice == Choice::Closest ? std::fabs(s.r - target.r) : 0.0;
         if (score >= best_score) continue;
         double deepest;
         if (!view.fits(s.c, s.r, largest_r, settings.tol, deepest)) continue;

@@ -34,13 +34,13 @@ struct Settings {
   double search = 0;            // surface gap of candidate neighbours (> 0)
   int tries = 1000;             // groups of four tried per target, at most
   Choice choice = Choice::Closest;
-  double tol = 1e-6;            // spheres overlap when d_ij > tol * min(r_i, r_j)
-  int newton_steps = 1;         // Newton polish of each kernel solution
+  double tol = 1e-6;       // spheres overlap when d_ij > tol * min(r_i, r_j)
+  int newton_steps = 1;    // Newton polish of each kernel solution
 };
 
 // Placement domain of one process.
 struct Domain {
-  Vec3 lo, hi;                  // global box
+  Vec3 lo, hi;    // global box
   bool periodic[3] = {false, false, false};
   // Bounds of the spheres this process can see (its subdomain grown by the
   // ghost cutoff): a periodic image of a new sphere is added to the view
@@ -50,18 +50,18 @@ struct Domain {
 };
 
 struct Placement {
-  std::size_t index = 0;        // the target, an index into the particle vector
-  bool placed = false;          // false: no relocation was found
-  Vec3 x;                       // new centre (may lie outside the box in periodic dims)
-  double r = 0;                 // new radius
+  std::size_t index = 0;    // the target, an index into the particle vector
+  bool placed = false;      // false: no relocation was found
+  Vec3 x;                   // new centre (may lie outside the box in periodic dims)
+  double r = 0;             // new radius
 };
 
 // Totals of one relocation call (the host sums them over processes and rounds).
 struct Stats {
   std::int64_t targets = 0, relocated = 0, unplaced = 0;
   double volume_before = 0, volume_after = 0;
-  double max_overlap = 0;       // largest overlap of a relocated sphere, relative to rmin
-  std::int64_t solves = 0;      // kernel calls
+  double max_overlap = 0;     // largest overlap of a relocated sphere, relative to rmin
+  std::int64_t solves = 0;    // kernel calls
   void add(const Stats &o);
 };
 

@@ -207,7 +207,8 @@ int tangent_spheres_inversion(const Sphere in[4], Sphere out[2], int newton_step
   int count = 0;
   for (double sign : {1.0, -1.0}) {
     const Vec3 n = n0 + (sign * std::sqrt(t)) * w_unit;
-    const double h = (dot(n, q[0]) + sigma[0] + dot(n, q[1]) + sigma[1] + dot(n, q[2]) + sigma[2]) / 3;
+    const double h =
+        (dot(n, q[0]) + sigma[0] + dot(n, q[1]) + sigma[1] + dot(n, q[2]) + sigma[2]) / 3;
     if (!(h > 0)) continue;    // plane through or behind O: no sphere through O
     // Back to a sphere through O: centre n / (2h), radius 1 / (2h); then
     // subtract the shrink.
