@@ -1,0 +1,72 @@
+// One invocation of fix reinforce/invert, shared by the LAMMPS and LIGGGHTS
+// adapters: they implement HostHooks with their own atoms and communication,
+// and run_invocation does the rest (DESIGN.md sections 4 and 5).
+#pragma once
+
+#include "fix_options.h"
+#include "relocation.h"
+
+#include <string>
+#include <vector>
+
+namespace reinforce {
+
+// A host's per-atom arrays, owned atoms first then ghosts.
+struct AtomArrays {
+  int nlocal = 0, nall = 0;
+  double **x = nullptr;
+  const double *radius = nullptr;
+  const int *tag = nullptr;
+  const int *mask = nullptr;
+  const int *pending = nullptr;    // the fix's per-atom flag: 1 = target waiting for a place
+  int group_bit = 0, rebar_bit = 0;
+};
+
+class HostHooks {
+public:
+  virtual ~HostHooks() = default;
+
+  // Wraps periodic coordinates, migrates atoms to their owners, rebuilds the
+  // ghosts and forwards the pending flags to them.
+  virtual void refresh() = 0;
+  virtual AtomArrays atoms() = 0;
+  virtual void set_pending(int local, bool pending) = 0;
+  // Sends the pending flags of owned atoms to their ghost copies.
+  virtual void forward_pending() = 0;
+
+  // Makes the ghost cutoff at least `reach` (or stops with an error that
+  // names the value needed); restore_ghost_cutoff undoes a raise.
+  virtual void ensure_ghost_cutoff(double reach) = 0;
+  virtual void restore_ghost_cutoff() = 0;
+  // Stops with an error when same-round processes could place spheres in one
+  // neighbourhood (a subdomain thinner than `width` in a split dimension).
+  virtual void check_subdomain_width(double width) = 0;
+
+  virtual Rounds rounds() = 0;
+  virtual Domain domain() = 0;
+
+  // New centre and radius for an owned atom (the host keeps the density and
+  // clears the pending flag), and removal of owned atoms.
+  virtual void move(int local, Vec3 x, double r) = 0;
+  virtual void remove(std::vector<int> &locals) = 0;
+
+  // Global reductions over all processes.
+  virtual double sum(double v) = 0;
+  virtual double max(double v) = 0;
+  virtual double wall_time() = 0;
+  virtual void log(const std::string &line) = 0;
+  virtual void fail(const std::string &message) = 0;    // does not return
+};
+
+// Totals of one invocation over all processes, as the fix reports them.
+struct Totals {
+  Stats stats;
+  double deleted = 0, kept = 0;
+  double seconds = 0;
+};
+
+// Runs one invocation: radius range, ghost reach, targets, rounds of
+// relocation with a refresh after each, deletions, totals and the log line.
+Totals run_invocation(HostHooks &host, const FixOptions &options);
+
+}    // namespace reinforce

@@ -1,0 +1,212 @@
+// The shared invocation driver, on an in-memory host with one process.
+#include "invocation.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+using namespace reinforce;
+
+namespace {
+
+constexpr int kGroup = 1, kRebar = 2, kOther = 4;
+
+// One process, non-periodic box [0,1]^3, atoms in plain vectors.
+class MemoryHost : public HostHooks {
+public:
+  std::vector<std::array<double, 3>> pos;
+  std::vector<double *> rows;
+  std::vector<double> radius, mass;
+  std::vector<int> tag, mask, pending;
+  std::vector<std::string> logged;
+  int refreshes = 0;
+  double cutoff_asked = 0;
+
+  void add(Vec3 x, double r, int m)
+  {
+    pos.push_back({x.x, x.y, x.z});
+    radius.push_back(r);
+    mass.push_back(r * r * r);
+    tag.push_back(static_cast<int>(tag.size()) + 1);
+    mask.push_back(m);
+    pending.push_back(0);
+  }
+  void refresh() override { ++refreshes; }
+  AtomArrays atoms() override
+  {
+    rows.clear();
+    for (auto &p : pos) rows.push_back(p.data());
+    AtomArrays a;
+    a.nlocal = a.nall = static_cast<int>(pos.size());
+    a.x = rows.data();
+    a.radius = radius.data();
+    a.tag = tag.data();
+    a.mask = mask.data();
+    a.pending = pending.data();
+    a.group_bit = kGroup;
+    a.rebar_bit = kRebar;
+    return a;
+  }
+  void set_pending(int i, bool p) override { pending[i] = p; }
+  void forward_pending() override {}
+  void ensure_ghost_cutoff(double reach) override { cutoff_asked = reach; }
+  void restore_ghost_cutoff() override {}
+  void check_subdomain_width(double) override {}
+  Rounds rounds() override { return {}; }
+  Domain domain() override
+  {
+    Domain d;
+    d.lo = {0, 0, 0};
+    d.hi = d.view_hi = {1, 1, 1};
+    return d;
+  }
+  void move(int i, Vec3 x, double r) override
+  {
+    pos[i] = {x.x, x.y, x.z};
+    mass[i] *= std::pow(r / radius[i], 3);
+    radius[i] = r;
+    pending[i] = 0;
+  }
+  void remove(std::vector<int> &locals) override
+  {
+    std::sort(locals.rbegin(), locals.rend());
+    for (int i : locals) {
+      pos.erase(pos.begin() + i);
+      radius.erase(radius.begin() + i);
+      mass.erase(mass.begin() + i);
+      tag.erase(tag.begin() + i);
+      mask.erase(mask.begin() + i);
+      pending.erase(pending.begin() + i);
+    }
+  }
+  double sum(double v) override { return v; }
+  double max(double v) override { return v; }
+  double wall_time() override { return 0; }
+  void log(const std::string &line) override { logged.push_back(line); }
+  void fail(const std::string &message) override { throw std::runtime_error(message); }
+};
+
+// Jittered lattice of matrix spheres (radii 0.02..0.04) with a bar along x.
+void fill(MemoryHost &h, unsigned seed)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  const int n = 11;
+  const double step = 1.0 / n;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k) {
+        const double r = 0.02 + 0.02 * u(rng);
+        Vec3 c{(i + 0.5) * step, (j + 0.5) * step, (k + 0.5) * step};
+        for (int d = 0; d < 3; ++d) c[d] += (step / 2 - r) * (2 * u(rng) - 1);
+        h.add(c, r, kGroup);
+      }
+  for (double x = 0.03; x < 0.97; x += 0.05) h.add({x, 0.5, 0.5}, 0.03, kGroup | kRebar);
+}
+
+double worst_matrix_overlap(const MemoryHost &h)
+{
+  double worst = -INFINITY;
+  for (std::size_t i = 0; i < h.pos.size(); ++i) {
+    if (h.mask[i] & kRebar) continue;
+    for (std::size_t j = 0; j < h.pos.size(); ++j) {
+      if (i == j) continue;
+      const double d = std::sqrt(std::pow(h.pos[i][0] - h.pos[j][0], 2) +
+                                 std::pow(h.pos[i][1] - h.pos[j][1], 2) +
+                                 std::pow(h.pos[i][2] - h.pos[j][2], 2));
+      worst = std::max(worst, (h.radius[i] + h.radius[j] - d) / std::min(h.radius[i], h.radius[j]));
+    }
+  }
+  return worst;
+}
+
+}    // namespace
+
+TEST(Invocation, RelocatesDeletesAndReports)
+{
+  MemoryHost h;
+  fill(h, 1);
+  const std::size_t before = h.pos.size();
+  const Totals t = run_invocation(h, parse_fix_arguments({"0", "bars"}));
+  EXPECT_GT(t.stats.targets, 10);
+  EXPECT_EQ(t.stats.targets, t.stats.relocated + t.stats.unplaced);
+  EXPECT_EQ(before - h.pos.size(), static_cast<std::size_t>(t.deleted));
+  EXPECT_EQ(t.kept, 0);
+  EXPECT_LE(worst_matrix_overlap(h), 1e-6);
+  for (int p : h.pending) EXPECT_EQ(p, 0);
+  // Mass follows volume (density kept).
+  for (std::size_t i = 0; i < h.pos.size(); ++i)
+    EXPECT_NEAR(h.mass[i], std::pow(h.radius[i], 3), 1e-15);
+  ASSERT_EQ(h.logged.size(), 1u);
+  EXPECT_EQ(h.logged[0].rfind("fix reinforce/invert: ", 0), 0u);
+  EXPECT_GT(h.cutoff_asked, 0);
+  EXPECT_EQ(h.refreshes, 1);    // one process: no rounds, one refresh at the start
+}
+
+TEST(Invocation, KeepLeavesUnplacedInPlace)
+{
+  MemoryHost h;
+  fill(h, 2);
+  const std::size_t before = h.pos.size();
+  // A radius range no void fits: nothing relocates, everything is kept.
+  const Totals t = run_invocation(
+      h, parse_fix_arguments({"0", "bars", "radius", "0.3", "0.3", "unplaced", "keep"}));
+  EXPECT_GT(t.stats.targets, 0);
+  EXPECT_EQ(t.stats.relocated, 0);
+  EXPECT_EQ(t.kept, t.stats.targets);
+  EXPECT_EQ(h.pos.size(), before);
+  for (int p : h.pending) EXPECT_EQ(p, 0);
+}
+
+TEST(Invocation, OnlyFixGroupAtomsAreTargetsButAllAreObstacles)
+{
+  MemoryHost h;
+  fill(h, 3);
+  for (std::size_t i = 0; i < h.mask.size(); ++i)
+    if (!(h.mask[i] & kRebar) && h.pos[i][0] < 0.5) h.mask[i] = kOther;    // outside the fix group
+  const std::size_t before = h.pos.size();
+  const Totals t = run_invocation(h, parse_fix_arguments({"0", "bars"}));
+  EXPECT_GT(t.stats.targets, 0);
+  // Outside the group: untouched even where it overlaps the bar.
+  int other = 0;
+  for (std::size_t i = 0; i < h.mask.size(); ++i) other += h.mask[i] == kOther;
+  EXPECT_GT(other, 0);
+  EXPECT_EQ(before - h.pos.size(), static_cast<std::size_t>(t.deleted));
+  // Relocated spheres overlap no one, not even atoms outside the group.
+  double worst = -INFINITY;
+  for (std::size_t i = 0; i < h.pos.size(); ++i) {
+    if (h.mask[i] != kGroup) continue;
+    for (std::size_t j = 0; j < h.pos.size(); ++j) {
+      if (i == j) continue;
+      const double d = std::sqrt(std::pow(h.pos[i][0] - h.pos[j][0], 2) +
+                                 std::pow(h.pos[i][1] - h.pos[j][1], 2) +
+                                 std::pow(h.pos[i][2] - h.pos[j][2], 2));
+      worst = std::max(worst, (h.radius[i] + h.radius[j] - d) / std::min(h.radius[i], h.radius[j]));
+    }
+  }
+  EXPECT_LE(worst, 1e-6);
+}
+
+TEST(Invocation, EmptyRebarGroupIsAnError)
+{
+  MemoryHost h;
+  fill(h, 4);
+  for (int &m : h.mask) m &= ~kRebar;
+  try {
+    run_invocation(h, parse_fix_arguments({"0", "bars"}));
+    FAIL() << "no error";
+  } catch (const std::runtime_error &e) {
+    EXPECT_STREQ(e.what(), "Fix reinforce/invert rebar group 'bars' is empty");
+  }
+}
+
+TEST(Invocation, ImpossibleRadiusRangeFromSceneIsAnError)
+{
+  MemoryHost h;
+  h.add({0.5, 0.5, 0.5}, 0.05, kGroup | kRebar);
+  h.add({0.2, 0.2, 0.2}, 0.0, kGroup);    // a matrix sphere of radius 0
+  h.add({0.2, 0.5, 0.2}, 0.1, kGroup);
+  EXPECT_THROW(run_invocation(h, parse_fix_arguments({"0", "bars"})), std::runtime_error);
+}
