@@ -55,7 +55,7 @@ public:
   void restore_ghost_cutoff() override {}
   void check_subdomain_width(double) override {}
   Rounds rounds() override { return {}; }
-  Domain domain() override
+  Domain placement_domain() override
   {
     Domain d;
     d.lo = {0, 0, 0};

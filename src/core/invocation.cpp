@@ -80,7 +80,7 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
     host.forward_pending();
 
     const Rounds rounds = host.rounds();
-    const Domain domain = host.domain();
+    const Domain domain = host.placement_domain();
     for (int round = 0; round < rounds.count; ++round) {
       if (round == rounds.mine) {
         a = host.atoms();

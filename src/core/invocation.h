@@ -39,11 +39,12 @@ public:
   virtual void ensure_ghost_cutoff(double reach) = 0;
   virtual void restore_ghost_cutoff() = 0;
   // Stops with an error when same-round processes could place spheres in one
-  // neighbourhood (a subdomain thinner than `width` in a split dimension).
+  // neighbourhood: a subdomain thinner than `width` in a dimension split over
+  // three or more processes (with two, the two are never in one round).
   virtual void check_subdomain_width(double width) = 0;
 
   virtual Rounds rounds() = 0;
-  virtual Domain domain() = 0;
+  virtual Domain placement_domain() = 0;
 
   // New centre and radius for an owned atom (the host keeps the density and
   // clears the pending flag), and removal of owned atoms.

@@ -1,0 +1,316 @@
+#include "fix_reinforce_invert.h"
+
+#include "atom.h"
+#include "atom_vec.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "group.h"
+#include "memory.h"
+#include "region.h"
+#include "update.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+using namespace LAMMPS_NS;
+
+FixReinforceInvert::FixReinforceInvert(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
+{
+  try {
+    options_ = reinforce::parse_fix_arguments(std::vector<std::string>(arg + 3, arg + narg));
+  } catch (const reinforce::OptionError &e) {
+    error->all(FLERR, e.what());
+  }
+  const int rebar = group->find(options_.rebar_group.c_str());
+  if (rebar < 0)
+    fail("Fix reinforce/invert rebar group '" + options_.rebar_group + "' does not exist");
+  if (rebar == igroup) fail("Fix reinforce/invert rebar group must differ from the fix group");
+  rebar_bit_ = group->bitmask[rebar];
+  if (!atom->radius_flag || !atom->rmass_flag)
+    fail("Fix reinforce/invert requires atom attributes radius and rmass");
+  if (atom->molecular) fail("Fix reinforce/invert does not support molecular atom styles");
+  if (domain->triclinic) fail("Fix reinforce/invert does not support triclinic boxes");
+  if (!options_.region.empty()) {
+    const int r = domain->find_region(const_cast<char *>(options_.region.c_str()));
+    if (r < 0) fail("Fix reinforce/invert region '" + options_.region + "' does not exist");
+  }
+
+  vector_flag = 1;
+  size_vector = 9;
+  global_freq = 1;
+  extvector = 0;
+  comm_forward = 1;
+  if (options_.every > 0) force_reneighbor = 1;
+  next_reneighbor = -1;
+
+  grow_arrays(atom->nmax);
+  atom->add_callback(0);
+  for (int i = 0; i < atom->nmax; ++i) pending_[i] = 0;
+}
+
+FixReinforceInvert::~FixReinforceInvert()
+{
+  atom->delete_callback(id, 0);
+  memory->destroy(pending_);
+}
+
+// PRE_EXCHANGE also for N = 0: the host calls setup_pre_exchange only for
+// fixes that ask for pre_exchange.
+int FixReinforceInvert::setmask()
+{
+  return FixConst::PRE_EXCHANGE;
+}
+
+void FixReinforceInvert::init()
+{
+  if (domain->triclinic) fail("Fix reinforce/invert does not support triclinic boxes");
+  region_ = nullptr;
+  if (!options_.region.empty()) {
+    const int r = domain->find_region(const_cast<char *>(options_.region.c_str()));
+    if (r < 0) fail("Fix reinforce/invert region '" + options_.region + "' does not exist");
+    region_ = domain->regions[r];
+  }
+}
+
+// N = 0: once, at the start of the first run. N > 0: at the start of every
+// run, then every N steps.
+void FixReinforceInvert::setup_pre_exchange()
+{
+  if (options_.every == 0 && invoked_) return;
+  invoke();
+  if (options_.every > 0) next_reneighbor = update->ntimestep + options_.every;
+}
+
+void FixReinforceInvert::pre_exchange()
+{
+  if (options_.every == 0 || update->ntimestep != next_reneighbor) return;
+  invoke();
+  next_reneighbor = update->ntimestep + options_.every;
+}
+
+void FixReinforceInvert::invoke()
+{
+  invoked_ = true;
+  if (region_) region_->prematch();
+  const reinforce::Totals t = reinforce::run_invocation(*this, options_);
+  const double values[9] = {static_cast<double>(t.stats.targets),
+                            static_cast<double>(t.stats.relocated),
+                            t.deleted,
+                            t.kept,
+                            t.stats.volume_before,
+                            t.stats.volume_after,
+                            t.stats.max_overlap,
+                            static_cast<double>(t.stats.solves),
+                            t.seconds};
+  std::copy(values, values + 9, output_);
+  // As delete_atoms does: the global count and the atom map.
+  bigint nlocal = atom->nlocal;
+  MPI_Allreduce(&nlocal, &atom->natoms, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (atom->map_style) {
+    atom->nghost = 0;
+    atom->map_init();
+    atom->map_set();
+  }
+}
+
+double FixReinforceInvert::compute_vector(int n)
+{
+  return output_[n];
+}
+
+/* ---- per-atom pending flag ---- */
+
+void FixReinforceInvert::grow_arrays(int nmax)
+{
+  memory->grow(pending_, nmax, "reinforce/invert:pending");
+}
+
+void FixReinforceInvert::copy_arrays(int i, int j, int)
+{
+  pending_[j] = pending_[i];
+}
+
+int FixReinforceInvert::pack_exchange(int i, double *buf)
+{
+  buf[0] = pending_[i];
+  return 1;
+}
+
+int FixReinforceInvert::unpack_exchange(int nlocal, double *buf)
+{
+  pending_[nlocal] = static_cast<int>(buf[0]);
+  return 1;
+}
+
+// LIGGGHTS 3.8 expects the number of values per atom back (LAMMPS 2021's
+// pack_forward_comm returns the total).
+int FixReinforceInvert::pack_comm(int n, int *list, double *buf, int, int *)
+{
+  for (int k = 0; k < n; ++k) buf[k] = pending_[list[k]];
+  return 1;
+}
+
+void FixReinforceInvert::unpack_comm(int n, int first, double *buf)
+{
+  for (int k = 0; k < n; ++k) pending_[first + k] = static_cast<int>(buf[k]);
+}
+
+/* ---- reinforce::HostHooks ---- */
+
+void FixReinforceInvert::refresh()
+{
+  domain->pbc();
+  domain->reset_box();
+  comm->setup();
+  comm->exchange();
+  atom->nghost = 0;
+  comm->borders();
+  forward_pending();
+}
+
+reinforce::AtomArrays FixReinforceInvert::atoms()
+{
+  reinforce::AtomArrays a;
+  a.nlocal = atom->nlocal;
+  a.nall = atom->nlocal + atom->nghost;
+  a.x = atom->x;
+  a.radius = atom->radius;
+  a.tag = atom->tag;
+  a.mask = atom->mask;
+  a.pending = pending_;
+  a.group_bit = groupbit;
+  a.rebar_bit = rebar_bit_;
+  return a;
+}
+
+void FixReinforceInvert::set_pending(int local, bool pending)
+{
+  pending_[local] = pending ? 1 : 0;
+}
+
+void FixReinforceInvert::forward_pending()
+{
+  comm->forward_comm_fix(this);
+}
+
+void FixReinforceInvert::ensure_ghost_cutoff(double reach)
+{
+  const double have = std::min({comm->cutghost[0], comm->cutghost[1], comm->cutghost[2]});
+  if (have >= reach) return;
+  user_cutghost_ = comm->cutghostuser;
+  comm->cutghostuser = reach;
+  refresh();
+  char line[200];
+  std::snprintf(line, sizeof line,
+                "fix reinforce/invert: ghost cutoff raised from %g to %g for the relocation\n",
+                have, reach);
+  log(line);
+}
+
+void FixReinforceInvert::restore_ghost_cutoff()
+{
+  if (user_cutghost_ < 0) return;
+  comm->cutghostuser = user_cutghost_;
+  user_cutghost_ = -1;
+  comm->setup();
+}
+
+void FixReinforceInvert::check_subdomain_width(double width)
+{
+  static const char axis[] = "xyz";
+  for (int d = 0; d < 3; ++d) {
+    if (comm->procgrid[d] < 3) continue;    // with two, neighbours are never in one round
+    const double thinnest = -max(-(domain->subhi[d] - domain->sublo[d]));
+    if (thinnest < width) {
+      char line[300];
+      std::snprintf(line, sizeof line,
+                    "Fix reinforce/invert needs subdomains at least %g thick along %c, found %g: "
+                    "use fewer processes along %c (processors command)",
+                    width, axis[d], thinnest, axis[d]);
+      fail(line);
+    }
+  }
+}
+
+reinforce::Rounds FixReinforceInvert::rounds()
+{
+  const bool periodic[3] = {domain->periodicity[0] != 0, domain->periodicity[1] != 0,
+                            domain->periodicity[2] != 0};
+  return reinforce::colour_rounds(comm->procgrid, comm->myloc, periodic);
+}
+
+reinforce::Domain FixReinforceInvert::placement_domain()
+{
+  reinforce::Domain d;
+  for (int k = 0; k < 3; ++k) {
+    d.lo[k] = domain->boxlo[k];
+    d.hi[k] = domain->boxhi[k];
+    d.periodic[k] = domain->periodicity[k] != 0;
+    d.view_lo[k] = domain->sublo[k] - comm->cutghost[k];
+    d.view_hi[k] = domain->subhi[k] + comm->cutghost[k];
+  }
+  if (region_) {
+    Region *region = region_;
+    d.region = [region](const reinforce::Vec3 &c) { return region->match(c.x, c.y, c.z) != 0; };
+  }
+  return d;
+}
+
+void FixReinforceInvert::move(int i, reinforce::Vec3 x, double r)
+{
+  const double scale = r / atom->radius[i];
+  for (int k = 0; k < 3; ++k) {
+    atom->x[i][k] = x[k];
+    atom->v[i][k] = 0;
+    if (atom->omega_flag) atom->omega[i][k] = 0;
+  }
+  atom->rmass[i] *= scale * scale * scale;    // same material density
+  atom->radius[i] = r;
+  pending_[i] = 0;
+}
+
+// As delete_atoms does: the last owned atom moves into each hole (avec->copy
+// also carries every fix's per-atom data). Highest index first, so a moved
+// atom is never one still to be removed.
+void FixReinforceInvert::remove(std::vector<int> &locals)
+{
+  std::sort(locals.rbegin(), locals.rend());
+  for (int i : locals) {
+    atom->avec->copy(atom->nlocal - 1, i, 1);
+    atom->nlocal--;
+  }
+}
+
+double FixReinforceInvert::sum(double v)
+{
+  double out;
+  MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_SUM, world);
+  return out;
+}
+
+double FixReinforceInvert::max(double v)
+{
+  double out;
+  MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_MAX, world);
+  return out;
+}
+
+double FixReinforceInvert::wall_time()
+{
+  return MPI_Wtime();
+}
+
+void FixReinforceInvert::log(const std::string &line)
+{
+  if (comm->me != 0) return;
+  if (screen) std::fputs(line.c_str(), screen);
+  if (logfile) std::fputs(line.c_str(), logfile);
+}
+
+void FixReinforceInvert::fail(const std::string &message)
+{
+  error->all(FLERR, message.c_str());
+}

@@ -1,0 +1,60 @@
+// LIGGGHTS adapter of fix reinforce/invert: translates the host's atoms and
+// communication into reinforce::HostHooks; the algorithm is in src/core.
+#ifndef REINFORCE_LIGGGHTS_FIX_REINFORCE_INVERT_H
+#define REINFORCE_LIGGGHTS_FIX_REINFORCE_INVERT_H
+
+#include "fix.h"
+#include "invocation.h"
+
+namespace LAMMPS_NS {
+
+class FixReinforceInvert : public Fix, private reinforce::HostHooks {
+public:
+  FixReinforceInvert(class LAMMPS *, int, char **);
+  ~FixReinforceInvert();
+  int setmask();
+  void init();
+  void setup_pre_exchange();
+  void pre_exchange();
+  double compute_vector(int);
+
+  void grow_arrays(int);
+  void copy_arrays(int, int, int);
+  int pack_exchange(int, double *);
+  int unpack_exchange(int, double *);
+  int pack_comm(int, int *, double *, int, int *);
+  void unpack_comm(int, int, double *);
+
+private:
+  reinforce::FixOptions options_;
+  int rebar_bit_ = 0;
+  class Region *region_ = nullptr;
+  int *pending_ = nullptr;    // per atom: 1 = target waiting for a place
+  double output_[9] = {};
+  bool invoked_ = false;
+  double user_cutghost_ = -1;    // >= 0 while the ghost cutoff is raised
+
+  void invoke();
+
+  // reinforce::HostHooks
+  void refresh() override;
+  reinforce::AtomArrays atoms() override;
+  void set_pending(int local, bool pending) override;
+  void forward_pending() override;
+  void ensure_ghost_cutoff(double reach) override;
+  void restore_ghost_cutoff() override;
+  void check_subdomain_width(double width) override;
+  reinforce::Rounds rounds() override;
+  reinforce::Domain placement_domain() override;
+  void move(int local, reinforce::Vec3 x, double r) override;
+  void remove(std::vector<int> &locals) override;
+  double sum(double v) override;
+  double max(double v) override;
+  double wall_time() override;
+  void log(const std::string &line) override;
+  void fail(const std::string &message) override;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
