@@ -1,0 +1,447 @@
+// fix reinforce/invert: the LAMMPS adapter (see fix_reinforce_invert.h).
+//
+// Note on messages: only the std::string overloads of error->all() and
+// utils::logmesg() may be called (see fmt_compat/fmt/format.h), so every
+// message is built here as a std::string.
+
+#include "fix_reinforce_invert.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "group.h"
+#include "modify.h"
+#include "region.h"
+#include "update.h"
+
+#include "invocation.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <type_traits>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+// The engine's view takes atom IDs as int (LAMMPS_SMALLBIG, Debian's build).
+static_assert(std::is_same<tagint, int>::value,
+              "fix reinforce/invert expects 32-bit atom IDs (LAMMPS_SMALLBIG)");
+
+namespace {
+
+const char *const kDimName[3] = {"x", "y", "z"};
+
+// Marks of the per-atom pending flag.
+constexpr int kPresent = 0;    // not waiting (rebar, matrix, relocated, kept)
+constexpr int kPending = 1;    // a target waiting for its new place
+constexpr int kDoomed = 2;     // no place found: to be deleted at the next refresh
+
+// ---------------------------------------------------------------------------
+// Deletion of atoms, with LAMMPS's own code path for it.
+//
+// delete_atoms removes an atom by AtomVec::copy() of the last owned atom into
+// its slot, which also calls copy_arrays() of every fix holding per-atom data.
+// liblammps-dev does not ship atom_vec.h, so AtomVec::copy cannot be called
+// from here, and copying the rows registered in atom->peratom generically is
+// not safe: in this LAMMPS some registered pointers are never initialised
+// (atom->vest_temp), so "skip the null ones" reads garbage.
+//
+// comm->exchange() runs exactly that AtomVec::copy for every atom that leaves
+// the subdomain, and with one process in a dimension drops it; with more, the
+// neighbours accept it only if its coordinate lies in their subdomain. So an
+// atom whose x coordinate is set to the largest double just before an
+// exchange is deleted the way delete_atoms does it, on every process grid.
+// (domain->pbc() must not run in between: it would try to wrap it.)
+// ---------------------------------------------------------------------------
+void mark_doomed_atoms_for_exchange(Atom *atom, const std::vector<int> &pending)
+{
+  for (int i = 0; i < atom->nlocal; ++i)
+    if (pending[i] == kDoomed) atom->x[i][0] = std::numeric_limits<double>::max();
+}
+
+std::string format_length(double v)
+{
+  return fmt::format("{:.6g}", v);
+}
+
+}    // namespace
+
+// ---------------------------------------------------------------------------
+// The engine's host: LAMMPS's atoms and communication behind
+// reinforce::HostHooks. run_invocation() calls every collective hook on all
+// processes; move() and remove() only on the processes of the current round.
+// ---------------------------------------------------------------------------
+
+class FixReinforceInvert::Host : public reinforce::HostHooks {
+public:
+  explicit Host(FixReinforceInvert &fix) : f(fix) {}
+
+  // The refresh LAMMPS's Monte Carlo fixes do inside pre_exchange, plus
+  // comm->setup(): at setup_pre_exchange of the first run it has not been
+  // called yet, and it also applies a changed ghost cutoff. The exchange
+  // also deletes the atoms remove() marked.
+  void refresh() override
+  {
+    f.domain->pbc();
+    f.domain->reset_box();
+    f.comm->setup();
+    mark_doomed_atoms_for_exchange(f.atom, f.pending);
+    f.comm->exchange();
+    f.atom->nghost = 0;
+    f.comm->borders();
+    forward_pending();
+  }
+
+  reinforce::AtomArrays atoms() override
+  {
+    Atom *atom = f.atom;
+    if (static_cast<int>(f.pending.size()) < atom->nmax) f.grow_arrays(atom->nmax);
+    reinforce::AtomArrays a;
+    a.nlocal = atom->nlocal;
+    a.nall = atom->nlocal + atom->nghost;
+    a.x = atom->x;
+    a.radius = atom->radius;
+    a.tag = atom->tag;
+    a.mask = atom->mask;
+    a.pending = f.pending.data();
+    a.group_bit = f.groupbit;
+    a.rebar_bit = f.rebar_bit;
+    return a;
+  }
+
+  void set_pending(int local, bool flag) override { f.pending[local] = flag ? kPending : kPresent; }
+
+  void forward_pending() override
+  {
+    // Also with one process: periodic images are ghosts too.
+    f.comm->forward_comm_fix(&f);
+  }
+
+  void ensure_ghost_cutoff(double reach) override
+  {
+    saved_cutghostuser = f.comm->cutghostuser;
+    const double before = std::min({f.comm->cutghost[0], f.comm->cutghost[1], f.comm->cutghost[2]});
+    if (before >= reach) return;
+    f.comm->cutghostuser = reach;
+    raised = true;
+    refresh();    // comm->setup() with the new cutoff, then the ghosts again
+    const double after = std::min({f.comm->cutghost[0], f.comm->cutghost[1], f.comm->cutghost[2]});
+    log("fix reinforce/invert: ghost cutoff raised from " + format_length(before) + " to " +
+        format_length(after) + " for relocation\n");
+  }
+
+  void restore_ghost_cutoff() override
+  {
+    if (!raised) return;
+    f.comm->cutghostuser = saved_cutghostuser;
+    f.comm->setup();
+    raised = false;
+  }
+
+  // Two processes of one round lie at least one subdomain apart, in a
+  // dimension where they differ. That only happens where the dimension has
+  // more processes than colours (a dimension with 2 processes, or 3 around a
+  // periodic ring, gives every process its own colour there).
+  void check_subdomain_width(double width) override
+  {
+    for (int d = 0; d < 3; ++d) {
+      const int p = f.comm->procgrid[d];
+      if (p <= 1) continue;
+      const int colours = (f.domain->periodicity[d] && p % 2 == 1) ? 3 : 2;
+      if (p <= colours) continue;
+      double thin = f.domain->subhi[d] - f.domain->sublo[d], thinnest = 0;
+      MPI_Allreduce(&thin, &thinnest, 1, MPI_DOUBLE, MPI_MIN, f.world);
+      if (thinnest < width)
+        fail("Fix reinforce/invert: subdomains " + format_length(thinnest) + " thick in " +
+             kDimName[d] +
+             " are thinner than 2*(target rmax + search + rmax) = " + format_length(width) +
+             ": processes relocating in one round could place spheres in one neighbourhood; "
+             "use fewer processes in " +
+             kDimName[d] + " (processors command) or a smaller search gap");
+    }
+  }
+
+  reinforce::Rounds rounds() override
+  {
+    const bool periodic[3] = {f.domain->periodicity[0] != 0, f.domain->periodicity[1] != 0,
+                              f.domain->periodicity[2] != 0};
+    return reinforce::colour_rounds(f.comm->procgrid, f.comm->myloc, periodic);
+  }
+
+  reinforce::Domain placement_domain() override
+  {
+    reinforce::Domain d;
+    for (int k = 0; k < 3; ++k) {
+      d.lo[k] = f.domain->boxlo[k];
+      d.hi[k] = f.domain->boxhi[k];
+      d.periodic[k] = f.domain->periodicity[k] != 0;
+      d.view_lo[k] = f.domain->sublo[k] - f.comm->cutghost[k];
+      d.view_hi[k] = f.domain->subhi[k] + f.comm->cutghost[k];
+    }
+    if (Region *region = f.region)
+      d.region = [region](const reinforce::Vec3 &x) { return region->match(x.x, x.y, x.z) != 0; };
+    return d;
+  }
+
+  void move(int i, reinforce::Vec3 x, double r) override
+  {
+    Atom *atom = f.atom;
+    const double scale = r / atom->radius[i];
+    for (int k = 0; k < 3; ++k) {
+      atom->x[i][k] = x[k];
+      atom->v[i][k] = 0.0;
+      if (atom->omega_flag) atom->omega[i][k] = 0.0;
+    }
+    atom->radius[i] = r;
+    atom->rmass[i] *= scale * scale * scale;    // the material density is kept
+    f.pending[i] = kPresent;
+  }
+
+  // Only the processes of one round call this, so the atoms are only marked
+  // here; the next refresh (collective) deletes them. Until then nothing
+  // looks at them, and afterwards they are gone from every view.
+  void remove(std::vector<int> &locals) override
+  {
+    for (int i : locals) f.pending[i] = kDoomed;
+  }
+
+  double sum(double v) override
+  {
+    double out = 0;
+    MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_SUM, f.world);
+    return out;
+  }
+
+  double max(double v) override
+  {
+    double out = 0;
+    MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_MAX, f.world);
+    return out;
+  }
+
+  double wall_time() override { return MPI_Wtime(); }
+
+  void log(const std::string &line) override
+  {
+    if (f.comm->me == 0) utils::logmesg(f.lmp, line);
+  }
+
+  void fail(const std::string &message) override { f.error->all(FLERR, message); }
+
+private:
+  FixReinforceInvert &f;
+  double saved_cutghostuser = 0;
+  bool raised = false;
+};
+
+/* ---------------------------------------------------------------------- */
+
+FixReinforceInvert::FixReinforceInvert(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
+{
+  std::vector<std::string> args;
+  for (int i = 3; i < narg; ++i) args.emplace_back(arg[i]);
+  try {
+    options = reinforce::parse_fix_arguments(args);
+  } catch (const reinforce::OptionError &e) {
+    error->all(FLERR, std::string(e.what()));
+  }
+
+  check_styles();
+  find_groups_and_region();
+
+  vector_flag = 1;
+  size_vector = 9;
+  global_freq = 1;
+  extvector = 0;
+  comm_forward = 1;
+  maxexchange = 1;
+  create_attribute = 1;
+  if (options.every > 0) {
+    force_reneighbor = 1;
+    next_reneighbor = -1;
+  }
+
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+}
+
+/* ---------------------------------------------------------------------- */
+
+FixReinforceInvert::~FixReinforceInvert()
+{
+  if (copymode) return;
+  atom->delete_callback(id, Atom::GROW);
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixReinforceInvert::setmask()
+{
+  // PRE_EXCHANGE also for N = 0: LAMMPS calls setup_pre_exchange() only for
+  // fixes in its pre_exchange list. MIN_PRE_EXCHANGE: the same at a minimize.
+  return PRE_EXCHANGE | MIN_PRE_EXCHANGE;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixReinforceInvert::check_styles()
+{
+  const std::string me = "Fix reinforce/invert ";
+  if (!atom->radius_flag || !atom->rmass_flag)
+    error->all(FLERR, me + "requires atom attributes radius and rmass");
+  if (!atom->tag_enable) error->all(FLERR, me + "requires atom IDs");
+  if (atom->molecular != Atom::ATOMIC)
+    error->all(FLERR, me + "does not support molecular atom styles");
+  if (atom->ellipsoid_flag || atom->line_flag || atom->tri_flag || atom->body_flag)
+    error->all(FLERR,
+               me + "does not support atom styles with bonus data (ellipsoid, line, tri, body)");
+  if (domain->dimension != 3) error->all(FLERR, me + "requires a 3d simulation");
+  if (domain->triclinic) error->all(FLERR, me + "does not support triclinic boxes");
+  if (comm->style != 0) error->all(FLERR, me + "requires comm_style brick");
+  if (comm->mode != Comm::SINGLE) error->all(FLERR, me + "requires comm_modify mode single");
+}
+
+void FixReinforceInvert::find_groups_and_region()
+{
+  rebar_group = group->find(options.rebar_group);
+  if (rebar_group < 0)
+    error->all(FLERR,
+               "Fix reinforce/invert rebar group '" + options.rebar_group + "' does not exist");
+  if (rebar_group == igroup)
+    error->all(FLERR,
+               std::string("Fix reinforce/invert rebar group must differ from the fix group"));
+  rebar_bit = group->bitmask[rebar_group];
+
+  region = nullptr;
+  if (!options.region.empty()) {
+    const int iregion = domain->find_region(options.region);
+    if (iregion < 0)
+      error->all(FLERR, "Fix reinforce/invert region '" + options.region + "' does not exist");
+    region = domain->regions[iregion];
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixReinforceInvert::init()
+{
+  // Styles, groups and regions may have changed since the fix was defined.
+  check_styles();
+  find_groups_and_region();
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixReinforceInvert::setup_pre_exchange()
+{
+  // write_restart and write_data also call setup_pre_exchange (whichflag 0):
+  // only a run or a minimization relocates.
+  if (update->whichflag == 0) return;
+  if (options.every > 0) next_reneighbor = (update->ntimestep / options.every + 1) * options.every;
+  if (invoked) return;
+  invoked = true;
+  invoke();
+}
+
+void FixReinforceInvert::pre_exchange()
+{
+  if (options.every <= 0 || next_reneighbor != update->ntimestep) return;
+  next_reneighbor += options.every;
+  invoke();
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixReinforceInvert::invoke()
+{
+  if (static_cast<int>(pending.size()) < atom->nmax) grow_arrays(atom->nmax);
+  std::fill(pending.begin(), pending.end(), kPresent);
+  if (region) region->prematch();
+
+  Host host(*this);
+  const reinforce::Totals t = reinforce::run_invocation(host, options);
+
+  // Atoms marked in the last round are deleted by one more refresh. Then, as
+  // delete_atoms does, the global count and the map of atom IDs. natoms is
+  // decreased by the deletions rather than recounted, so that atoms lost in
+  // any other way are still reported by LAMMPS.
+  if (t.deleted > 0) {
+    host.refresh();
+    atom->natoms -= static_cast<bigint>(t.deleted);
+    if (atom->map_style != Atom::MAP_NONE) {
+      atom->map_init();
+      atom->map_set();
+    }
+  }
+  // Nothing stale: every flag is clear between invocations.
+  std::fill(pending.begin(), pending.end(), kPresent);
+
+  const reinforce::Stats &s = t.stats;
+  totals[0] = static_cast<double>(s.targets);
+  totals[1] = static_cast<double>(s.relocated);
+  totals[2] = t.deleted;
+  totals[3] = t.kept;
+  totals[4] = s.volume_before;
+  totals[5] = s.volume_after;
+  totals[6] = s.max_overlap;
+  totals[7] = static_cast<double>(s.solves);
+  totals[8] = t.seconds;
+}
+
+/* ---------------------------------------------------------------------- */
+
+double FixReinforceInvert::compute_vector(int n)
+{
+  return (n >= 0 && n < 9) ? totals[n] : 0.0;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixReinforceInvert::grow_arrays(int nmax)
+{
+  if (static_cast<int>(pending.size()) < nmax) pending.resize(nmax, 0);
+}
+
+void FixReinforceInvert::copy_arrays(int i, int j, int /*delflag*/)
+{
+  pending[j] = pending[i];
+}
+
+void FixReinforceInvert::set_arrays(int i)
+{
+  pending[i] = 0;
+}
+
+int FixReinforceInvert::pack_exchange(int i, double *buf)
+{
+  buf[0] = pending[i];
+  return 1;
+}
+
+int FixReinforceInvert::unpack_exchange(int nlocal, double *buf)
+{
+  pending[nlocal] = static_cast<int>(buf[0]);
+  return 1;
+}
+
+int FixReinforceInvert::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/,
+                                          int * /*pbc*/)
+{
+  for (int k = 0; k < n; ++k) buf[k] = pending[list[k]];
+  return n;
+}
+
+void FixReinforceInvert::unpack_forward_comm(int n, int first, double *buf)
+{
+  for (int k = 0; k < n; ++k) pending[first + k] = static_cast<int>(buf[k]);
+}
+
+double FixReinforceInvert::memory_usage()
+{
+  return static_cast<double>(pending.capacity() * sizeof(int));
+}
