@@ -324,3 +324,56 @@ TEST(Kernel, NewtonPolishConverges)
   Sphere bad{{0, 0, 0}, -1};
   EXPECT_FALSE(polish_tangent_sphere(in, bad, 2));
 }
+
+// Found by fuzz_kernel: coordinates near 1e76 with radii near 1e-57. A
+// solution exact in the local frame is not representable globally; the
+// kernel must return nothing rather than a sphere that misses the contract.
+TEST(Kernel, FuzzRegressionUnrepresentableAnswer)
+{
+  const double v[16] = {1.2239892642988364e-250,
+                        1.3979718782083983e-76,
+                        -2.877778643224362e+76,
+                        1.398043286095289e-76,
+                        3.697842578956727e-57,
+                        2.62978563937385e-52,
+                        5.229550245763785e+67,
+                        5.22520243651314e-310,
+                        5.4808986009239014e-222,
+                        6.011840146654814e-67,
+                        2.1219649296e-314,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        0.0};
+  Sphere in[4], out[2];
+  for (int s = 0; s < 4; ++s) in[s] = {{v[4 * s], v[4 * s + 1], v[4 * s + 2]}, v[4 * s + 3]};
+  for (Solver solve : {Solver(tangent_spheres_inversion), Solver(tangent_spheres_algebraic)})
+    for (int steps : {0, 1}) expect_clean(in, out, solve(in, out, steps));
+}
+
+// One million random quadruples of every kind (random centres in a cube,
+// radii spanning six decades, a quarter of them nearly coplanar and a
+// quarter with touching pairs): every solution returned meets the contract.
+TEST(Kernel, MillionRandomQuadruplesMeetTheContract)
+{
+  std::mt19937_64 rng(1234567);
+  std::uniform_real_distribution<double> pos(-1, 1), decade(-3, 3);
+  long solutions = 0;
+  for (int t = 0; t < 1000000; ++t) {
+    Sphere in[4];
+    for (Sphere &s : in) s = {{pos(rng), pos(rng), pos(rng)}, 0.1 * std::pow(10.0, decade(rng))};
+    if (t % 4 == 1)
+      for (Sphere &s : in) s.c.z *= 1e-9;
+    if (t % 4 == 2)
+      in[1].c = in[0].c + ((in[0].r + in[1].r) / norm(in[1].c - in[0].c)) * (in[1].c - in[0].c);
+    Sphere out[2];
+    const int n = tangent_spheres_inversion(in, out, 1);
+    solutions += n;
+    for (int k = 0; k < n; ++k) {
+      ASSERT_TRUE(is_finite(out[k].c) && std::isfinite(out[k].r) && out[k].r > 0) << "case " << t;
+      ASSERT_LE(tangency_residual(in, out[k]), kAcceptResidual) << "case " << t;
+    }
+  }
+  EXPECT_GT(solutions, 100000);    // the test exercises solutions, not only rejections
+}

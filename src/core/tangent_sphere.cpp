@@ -128,13 +128,17 @@ void local_polish(const Local &L, Sphere &s, int steps)
 
 // Keeps a local solution if it is valid, polished as asked; returns the new
 // count. Drops a repeat of the previous solution (a double root).
-int keep_solution(const Local &L, Sphere s, int newton_steps, Sphere out[2], int count)
+int keep_solution(const Sphere in[4], const Local &L, Sphere s, int newton_steps, Sphere out[2],
+                  int count)
 {
   if (!(s.r > 0) || !is_finite(s.c)) return count;
   if (newton_steps > 0) local_polish(L, s, newton_steps);
   if (!(local_residual(L, s) <= kAcceptResidual)) return count;
+  // The contract is on the global spheres: far from the origin, or with
+  // radii far below the rounding of the coordinates, a solution exact in
+  // the local frame may not be representable (found by fuzzing).
   Sphere g{L.origin + L.scale * s.c, L.scale * s.r};
-  if (!is_finite(g.c) || !(g.r > 0) || !std::isfinite(g.r)) return count;
+  if (!(tangency_residual(in, g) <= kAcceptResidual)) return count;
   if (count == 1 && norm(out[0].c - g.c) + std::fabs(out[0].r - g.r) <= kSameSolution * g.r)
     return count;
   out[count] = g;
@@ -213,7 +217,7 @@ int tangent_spheres_inversion(const Sphere in[4], Sphere out[2], int newton_step
     // Back to a sphere through O: centre n / (2h), radius 1 / (2h); then
     // subtract the shrink.
     const double grown = 0.5 / h;
-    count = keep_solution(L, Sphere{grown * n, grown - m}, newton_steps, out, count);
+    count = keep_solution(in, L, Sphere{grown * n, grown - m}, newton_steps, out, count);
     if (t == 0) break;
   }
   return sorted(out, count);
@@ -266,7 +270,7 @@ int tangent_spheres_algebraic(const Sphere in[4], Sphere out[2], int newton_step
   for (int k = 0; k < nroots && count < 2; ++k) {
     const double r = roots[k];
     if (!(r > 0) || !std::isfinite(r)) continue;
-    count = keep_solution(L, Sphere{g + r * hv, r}, newton_steps, out, count);
+    count = keep_solution(in, L, Sphere{g + r * hv, r}, newton_steps, out, count);
   }
   return sorted(out, count);
 }

@@ -100,11 +100,13 @@ int main(int argc, char **argv)
         atoms.push_back({1, r, c[0], c[1], c[2]});
       }
   for (const auto &b : bars) {
-    const double len = std::sqrt(std::pow(b[3] - b[0], 2) + std::pow(b[4] - b[1], 2) + std::pow(b[5] - b[2], 2));
+    const double len =
+        std::sqrt(std::pow(b[3] - b[0], 2) + std::pow(b[4] - b[1], 2) + std::pow(b[5] - b[2], 2));
     const int n = std::max(1, static_cast<int>(std::round(len / b[7])));
     for (int s = 0; s <= n; ++s) {
       const double t = static_cast<double>(s) / n;
-      atoms.push_back({2, b[6], b[0] + t * (b[3] - b[0]), b[1] + t * (b[4] - b[1]), b[2] + t * (b[5] - b[2])});
+      atoms.push_back(
+          {2, b[6], b[0] + t * (b[3] - b[0]), b[1] + t * (b[4] - b[1]), b[2] + t * (b[5] - b[2])});
     }
   }
   for (const auto &h : hoops) {
@@ -120,10 +122,12 @@ int main(int argc, char **argv)
   }
   FILE *f = std::fopen(argv[1], "w");
   if (!f) usage("cannot write the output file");
-  std::fprintf(f, "reinforce/invert test scene (make_scene)\n\n%zu atoms\n2 atom types\n\n", atoms.size());
+  std::fprintf(f, "reinforce/invert test scene (make_scene)\n\n%zu atoms\n2 atom types\n\n",
+               atoms.size());
   const char *axes[3][2] = {{"xlo", "xhi"}, {"ylo", "yhi"}, {"zlo", "zhi"}};
   for (int d = 0; d < 3; ++d)
-    std::fprintf(f, "%.17g %.17g %s %s\n", box[2 * d] + offset[d], box[2 * d + 1] + offset[d], axes[d][0], axes[d][1]);
+    std::fprintf(f, "%.17g %.17g %s %s\n", box[2 * d] + offset[d], box[2 * d + 1] + offset[d],
+                 axes[d][0], axes[d][1]);
   std::fprintf(f, "\nAtoms\n\n");
   for (std::size_t i = 0; i < atoms.size(); ++i) {
     const Atom &a = atoms[i];
