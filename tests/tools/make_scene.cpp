@@ -5,10 +5,12 @@
 // rebar spheres (type 2) along straight segments.
 //
 // usage: make_scene OUT --box XLO XHI YLO YHI ZLO ZHI --radius RMIN RMAX
-//                   [--spacing S] [--seed N] [--offset DX DY DZ]
+//                   [--spacing S] [--fcc] [--seed N] [--offset DX DY DZ]
 //                   [--bar X0 Y0 Z0 X1 Y1 Z1 R STEP]... [--hoop CX CY CZ AXIS RING R STEP]...
 // A bar's spheres are STEP apart from X0 to X1 (STEP < 2R: overlapping
 // chain). A hoop is a closed ring of radius RING around axis x|y|z.
+// --fcc puts four spheres per cell (face-centred cubic, denser: about 0.45
+// with radii in [rmax/2, rmax]); the default is one (simple cubic).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -46,6 +48,7 @@ int main(int argc, char **argv)
   if (argc < 2) usage("no output file");
   double box[6] = {0, 1, 0, 1, 0, 1}, rmin = 0.02, rmax = 0.04, spacing = 0, offset[3] = {0, 0, 0};
   unsigned seed = 1;
+  bool fcc = false;
   std::vector<Atom> atoms;
   std::vector<std::vector<double>> bars, hoops;
   for (int i = 2; i < argc; ++i) {
@@ -57,6 +60,8 @@ int main(int argc, char **argv)
       rmax = num(argc, argv, ++i);
     } else if (k == "--spacing") {
       spacing = num(argc, argv, ++i);
+    } else if (k == "--fcc") {
+      fcc = true;
     } else if (k == "--seed") {
       seed = static_cast<unsigned>(num(argc, argv, ++i));
     } else if (k == "--offset") {
@@ -77,7 +82,12 @@ int main(int argc, char **argv)
     }
   }
   if (!(rmin > 0) || rmax < rmin) usage("bad radius range");
-  if (spacing <= 0) spacing = 2 * rmax * 1.05;
+  // Nearest lattice neighbours are spacing (sc) or spacing / sqrt(2) (fcc)
+  // apart: room for two rmax spheres either way.
+  if (spacing <= 0) spacing = 2 * rmax * 1.05 * (fcc ? std::sqrt(2.0) : 1.0);
+  const double basis[4][3] = {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
+  const int nbasis = fcc ? 4 : 1;
+  const double room = fcc ? spacing / std::sqrt(2.0) : spacing;    // nearest-neighbour distance
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0, 1);
   int cells[3];
@@ -89,16 +99,20 @@ int main(int argc, char **argv)
   }
   for (int i = 0; i < cells[0]; ++i)
     for (int j = 0; j < cells[1]; ++j)
-      for (int k = 0; k < cells[2]; ++k) {
-        const double r = rmin + (rmax - rmin) * u(rng);
-        const int ijk[3] = {i, j, k};
-        double c[3];
-        for (int d = 0; d < 3; ++d) {
-          const double slack = std::max(0.0, step[d] / 2 - r) * 0.999;
-          c[d] = box[2 * d] + (ijk[d] + 0.5) * step[d] + slack * (2 * u(rng) - 1);
+      for (int k = 0; k < cells[2]; ++k)
+        for (int b = 0; b < nbasis; ++b) {
+          const double r = rmin + (rmax - rmin) * u(rng);
+          const int ijk[3] = {i, j, k};
+          // Each sphere may move by its share of the room to its nearest
+          // neighbour (per axis, so at most sqrt(3) of that in all): never
+          // an overlap.
+          const double slack = std::max(0.0, room / 2 - r) / std::sqrt(3.0) * 0.999;
+          double c[3];
+          for (int d = 0; d < 3; ++d)
+            c[d] = box[2 * d] + (ijk[d] + (fcc ? 0.25 : 0.5) + basis[b][d]) * step[d] +
+                   slack * (2 * u(rng) - 1);
+          atoms.push_back({1, r, c[0], c[1], c[2]});
         }
-        atoms.push_back({1, r, c[0], c[1], c[2]});
-      }
   for (const auto &b : bars) {
     const double len =
         std::sqrt(std::pow(b[3] - b[0], 2) + std::pow(b[4] - b[1], 2) + std::pow(b[5] - b[2], 2));
