@@ -6,7 +6,7 @@ set -euo pipefail
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
 packages=(build-essential cmake lammps liblammps-dev liggghts libliggghts-dev
-          libopenmpi-dev openmpi-bin libfmt-dev libgtest-dev clang libclang-rt-14-dev)
+          libopenmpi-dev openmpi-bin libfmt-dev libgtest-dev clang libclang-rt-14-dev time)
 missing=()
 for p in "${packages[@]}"; do
   dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")
