@@ -326,3 +326,33 @@ TEST(Engine, SpheresNearRebarFindsOnlyThoseWithinMargin)
   const unsigned char none[6] = {0, 0, 0, 0, 0, 0};
   EXPECT_TRUE(spheres_near_rebar(6, x, radius, none, 2.0).empty());
 }
+
+// Pre-existing overlaps of the packing: each pair counted once over all
+// processes. Two processes each see the pair (one owned, one ghost): only
+// the owner of the lower id counts it; periodic images of a sphere never
+// pair with it; rebar pairs are not counted.
+TEST(Engine, PackingOverlapsCountedOncePerPair)
+{
+  const Particle a{{0, 0, 0}, 1, 10, Role::Matrix, true};
+  const Particle b{{1.5, 0, 0}, 1, 20, Role::Matrix, true};    // overlaps a by 0.5
+  const Particle bar1{{0, 3, 0}, 1, 30, Role::Rebar, true};
+  const Particle bar2{{1, 3, 0}, 1, 31, Role::Rebar, true};    // rebar clump: not counted
+  double largest = 0;
+  // One process owns both.
+  EXPECT_EQ(count_packing_overlaps({a, b, bar1, bar2}, 1e-6, 0.5, largest), 1);
+  EXPECT_DOUBLE_EQ(largest, 1.0);    // 0.5 overlap / rmin 0.5
+  // Two processes: each owns one and sees the other as a ghost.
+  Particle a_ghost = a, b_ghost = b;
+  a_ghost.owned = b_ghost.owned = false;
+  const std::int64_t on_first = count_packing_overlaps({a, b_ghost}, 1e-6, 0.5, largest);
+  const std::int64_t on_second = count_packing_overlaps({b, a_ghost}, 1e-6, 0.5, largest);
+  EXPECT_EQ(on_first + on_second, 1);
+  // A periodic image of a sphere is not a partner of the sphere itself.
+  Particle a_image = a;
+  a_image.owned = false;
+  a_image.x.x = 1.0;
+  EXPECT_EQ(count_packing_overlaps({a, a_image}, 1e-6, 0.5, largest), 0);
+  // Touching within tol is no overlap.
+  const Particle c{{2, 0, 0}, 1, 40, Role::Matrix, true};
+  EXPECT_EQ(count_packing_overlaps({a, c}, 1e-6, 0.5, largest), 0);
+}

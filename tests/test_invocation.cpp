@@ -210,3 +210,30 @@ TEST(Invocation, ImpossibleRadiusRangeFromSceneIsAnError)
   h.add({0.2, 0.5, 0.2}, 0.1, kGroup);
   EXPECT_THROW(run_invocation(h, parse_fix_arguments({"0", "bars"})), std::runtime_error);
 }
+
+// Matrix spheres that already overlap each other near a bar: the fix leaves
+// them as they are, says so in the log and in f_ID[10], and makes it no
+// worse (no relocated sphere overlaps anything).
+TEST(Invocation, ReportsPreExistingOverlapsAndLeavesThem)
+{
+  MemoryHost h;
+  fill(h, 5);
+  // Two matrix spheres pushed into each other next to the bar.
+  h.add({0.5, 0.62, 0.5}, 0.03, kGroup);
+  h.add({0.5, 0.62, 0.55}, 0.03, kGroup);
+  const std::array<double, 3> p1 = h.pos[h.pos.size() - 2], p2 = h.pos.back();
+  const Totals t = run_invocation(h, parse_fix_arguments({"0", "bars"}));
+  EXPECT_GE(t.packing_overlaps, 1);
+  // The pair overlaps by 0.01 (rmin is at most 0.04): at least 0.25 rmin;
+  // the two spheres may overlap lattice spheres more.
+  EXPECT_GE(t.packing_max_overlap, 0.25);
+  bool said = false;
+  for (const std::string &line : h.logged)
+    said = said || line.find("already has") != std::string::npos;
+  EXPECT_TRUE(said);
+  EXPECT_EQ(output_vector(t)[9], t.packing_overlaps);
+  // The pair is still there, unmoved.
+  int found = 0;
+  for (const auto &p : h.pos) found += (p == p1) + (p == p2);
+  EXPECT_EQ(found, 2);
+}

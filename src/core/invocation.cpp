@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace reinforce {
 
@@ -34,6 +35,21 @@ bool is_matrix(const AtomArrays &a, int i)
 }
 
 }    // namespace
+
+std::array<double, kOutputSize> output_vector(const Totals &t)
+{
+  const Stats &s = t.stats;
+  return {static_cast<double>(s.targets),
+          static_cast<double>(s.relocated),
+          t.deleted,
+          t.kept,
+          s.volume_before,
+          s.volume_after,
+          s.max_overlap,
+          static_cast<double>(s.solves),
+          t.seconds,
+          t.packing_overlaps};
+}
 
 Totals run_invocation(HostHooks &host, const FixOptions &options)
 {
@@ -78,6 +94,18 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
     for (std::size_t k : find_targets(view, settings.tol))
       if (is_matrix(a, local[k])) host.set_pending(local[k], true);
     host.forward_pending();
+    double largest_packing = 0;
+    totals.packing_overlaps = host.sum(static_cast<double>(
+        count_packing_overlaps(view, settings.tol, settings.rmin, largest_packing)));
+    totals.packing_max_overlap = host.max(largest_packing);
+    if (totals.packing_overlaps > 0) {
+      char line[200];
+      std::snprintf(line, sizeof line,
+                    "fix reinforce/invert: the packing near the bars already has %.0f overlapping "
+                    "pairs (largest %.2e rmin); they are left as they are\n",
+                    totals.packing_overlaps, totals.packing_max_overlap);
+      host.log(line);
+    }
 
     const Rounds rounds = host.rounds();
     const Domain domain = host.placement_domain();

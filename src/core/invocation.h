@@ -6,6 +6,7 @@
 #include "fix_options.h"
 #include "relocation.h"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -64,7 +65,17 @@ struct Totals {
   Stats stats;
   double deleted = 0, kept = 0;
   double seconds = 0;
+  // Matrix spheres near the bars that already overlapped each other before
+  // the relocation (left as they are; reported, not hidden).
+  double packing_overlaps = 0, packing_max_overlap = 0;
 };
+
+// The fix's global vector, f_ID[1] to f_ID[10]: targets, relocated,
+// deleted, kept, volume of the targets before, volume of the relocated
+// spheres after, largest residual overlap / rmin, kernel solves, wall time
+// (s), pairs of matrix spheres near the bars that already overlapped.
+constexpr int kOutputSize = 10;
+std::array<double, kOutputSize> output_vector(const Totals &t);
 
 // Runs one invocation: radius range, ghost reach, targets, rounds of
 // relocation with a refresh after each, deletions, totals and the log line.

@@ -199,6 +199,35 @@ std::vector<std::size_t> find_targets(const std::vector<Particle> &particles, do
   return out;
 }
 
+std::int64_t count_packing_overlaps(const std::vector<Particle> &particles, double tol, double rmin,
+                                    double &largest)
+{
+  largest = 0;
+  double r_max = 0;
+  for (const Particle &p : particles) r_max = std::max(r_max, p.r);
+  if (!(r_max > 0)) return 0;
+  CellGrid grid(2 * r_max);
+  for (std::size_t i = 0; i < particles.size(); ++i)
+    if (particles[i].role != Role::Rebar) grid.insert(particles[i].x, static_cast<int>(i));
+  std::int64_t pairs = 0;
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const Particle &p = particles[i];
+    if (!p.owned || p.role == Role::Rebar) continue;
+    grid.for_each_near(p.x, p.r + r_max, [&](int j) {
+      const Particle &q = particles[j];
+      // Once per pair: an owned partner by index, a ghost by id (its owner
+      // counts the pair when its id is the lower one); never an image of p.
+      if (q.id == p.id || (q.owned ? j <= static_cast<int>(i) : q.id < p.id)) return;
+      const double overlap = p.r + q.r - norm(p.x - q.x);
+      if (overlap > tol * std::min(p.r, q.r)) {
+        ++pairs;
+        largest = std::max(largest, overlap / rmin);
+      }
+    });
+  }
+  return pairs;
+}
+
 std::vector<Placement> relocate_targets(const std::vector<Particle> &particles,
                                         const Settings &settings, const Domain &domain,
                                         bool keep_unplaced, Stats &stats)

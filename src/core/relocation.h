@@ -84,6 +84,12 @@ std::vector<int> spheres_near_rebar(int n, const double *const *x, const double 
 // Indices of the owned non-rebar particles that overlap a rebar particle.
 std::vector<std::size_t> find_targets(const std::vector<Particle> &particles, double tol);
 
+// Pairs of non-rebar particles that already overlap (by more than tol *
+// min radius), each pair counted on exactly one process: by the owner of
+// the lower id. `largest` gets the largest such overlap relative to rmin.
+std::int64_t count_packing_overlaps(const std::vector<Particle> &particles, double tol, double rmin,
+                                    double &largest);
+
 // Relocates every owned Target of `particles`, in increasing id order, and
 // returns one Placement per such target in that order. Particles with role
 // Target (owned or not) are vacant; all others are present. A relocated

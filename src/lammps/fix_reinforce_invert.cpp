@@ -255,7 +255,7 @@ FixReinforceInvert::FixReinforceInvert(LAMMPS *lmp, int narg, char **arg) : Fix(
   find_groups_and_region();
 
   vector_flag = 1;
-  size_vector = 9;
+  size_vector = reinforce::kOutputSize;
   global_freq = 1;
   extvector = 0;
   comm_forward = 1;
@@ -381,23 +381,14 @@ void FixReinforceInvert::invoke()
   // Nothing stale: every flag is clear between invocations.
   std::fill(pending.begin(), pending.end(), kPresent);
 
-  const reinforce::Stats &s = t.stats;
-  totals[0] = static_cast<double>(s.targets);
-  totals[1] = static_cast<double>(s.relocated);
-  totals[2] = t.deleted;
-  totals[3] = t.kept;
-  totals[4] = s.volume_before;
-  totals[5] = s.volume_after;
-  totals[6] = s.max_overlap;
-  totals[7] = static_cast<double>(s.solves);
-  totals[8] = t.seconds;
+  totals = reinforce::output_vector(t);
 }
 
 /* ---------------------------------------------------------------------- */
 
 double FixReinforceInvert::compute_vector(int n)
 {
-  return (n >= 0 && n < 9) ? totals[n] : 0.0;
+  return (n >= 0 && n < reinforce::kOutputSize) ? totals[n] : 0.0;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -20,7 +20,10 @@ FixStyle(reinforce/invert,FixReinforceInvert);
 
 #include "fix.h"
 
+#include <array>
+
 #include "fix_options.h"
+#include "invocation.h"
 
 #include <vector>
 
@@ -56,7 +59,7 @@ private:
   class Region *region = nullptr;
   std::vector<int> pending;
   bool invoked = false;    // the relocation at the start of the first run is done
-  double totals[9] = {};
+  std::array<double, reinforce::kOutputSize> totals = {};
 
   void check_styles();
   void find_groups_and_region();

@@ -39,7 +39,7 @@ FixReinforceInvert::FixReinforceInvert(LAMMPS *lmp, int narg, char **arg) : Fix(
   }
 
   vector_flag = 1;
-  size_vector = 9;
+  size_vector = reinforce::kOutputSize;
   global_freq = 1;
   extvector = 0;
   comm_forward = 1;
@@ -75,20 +75,22 @@ void FixReinforceInvert::init()
   }
 }
 
-// N = 0: once, at the start of the first run. N > 0: at the start of every
-// run, then every N steps.
+// Once at the setup of the first run (or minimization) that follows; with
+// N > 0 also every N steps. write_restart and write_data call setup too
+// (whichflag 0): they never relocate.
 void FixReinforceInvert::setup_pre_exchange()
 {
-  if (options_.every == 0 && invoked_) return;
-  invoke();
-  if (options_.every > 0) next_reneighbor = update->ntimestep + options_.every;
+  if (update->whichflag == 0) return;
+  if (options_.every > 0)
+    next_reneighbor = (update->ntimestep / options_.every + 1) * options_.every;
+  if (!invoked_) invoke();
 }
 
 void FixReinforceInvert::pre_exchange()
 {
-  if (options_.every == 0 || update->ntimestep != next_reneighbor) return;
+  if (options_.every <= 0 || update->ntimestep != next_reneighbor) return;
+  next_reneighbor += options_.every;
   invoke();
-  next_reneighbor = update->ntimestep + options_.every;
 }
 
 void FixReinforceInvert::invoke()
@@ -96,16 +98,7 @@ void FixReinforceInvert::invoke()
   invoked_ = true;
   if (region_) region_->prematch();
   const reinforce::Totals t = reinforce::run_invocation(*this, options_);
-  const double values[9] = {static_cast<double>(t.stats.targets),
-                            static_cast<double>(t.stats.relocated),
-                            t.deleted,
-                            t.kept,
-                            t.stats.volume_before,
-                            t.stats.volume_after,
-                            t.stats.max_overlap,
-                            static_cast<double>(t.stats.solves),
-                            t.seconds};
-  std::copy(values, values + 9, output_);
+  output_ = reinforce::output_vector(t);
   // As delete_atoms does: the global count and the atom map.
   bigint nlocal = atom->nlocal;
   MPI_Allreduce(&nlocal, &atom->natoms, 1, MPI_LMP_BIGINT, MPI_SUM, world);
@@ -118,7 +111,7 @@ void FixReinforceInvert::invoke()
 
 double FixReinforceInvert::compute_vector(int n)
 {
-  return output_[n];
+  return (n >= 0 && n < reinforce::kOutputSize) ? output_[n] : 0.0;
 }
 
 /* ---- per-atom pending flag ---- */
