@@ -44,7 +44,7 @@ if [ "${REINFORCE_QUICK:-0}" != 1 ]; then
      cmake --build "$san" -j"$(nproc)" --target core_tests lmp_reinforce make_scene check_scene; then
     # Open MPI's own allocations are not ours to judge: no leak check.
     ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
-      run_ctest "$san" -R "${REINFORCE_SANITIZE_TESTS:-^Kernel|^Engine|^Fix|^Rounds|^Summary|^Invocation|^lammps_scene_basic}"
+      run_ctest "$san" -R "${REINFORCE_SANITIZE_TESTS:-^Kernel|^Engine|^Fix|^Rounds|^Summary|^Invocation|^stability_periodic_2x2x1_np4$|^stability_stiff}"
   else
     echo "sanitizer build failed"; failed=$((failed + 1))
   fi
