@@ -33,6 +33,7 @@ FixReinforceInvert::FixReinforceInvert(LAMMPS *lmp, int narg, char **arg) : Fix(
     fail("Fix reinforce/invert requires atom attributes radius and rmass");
   if (atom->molecular) fail("Fix reinforce/invert does not support molecular atom styles");
   if (domain->triclinic) fail("Fix reinforce/invert does not support triclinic boxes");
+  if (domain->dimension != 3) fail("Fix reinforce/invert requires a 3d simulation");
   if (!options_.region.empty()) {
     const int r = domain->find_region(const_cast<char *>(options_.region.c_str()));
     if (r < 0) fail("Fix reinforce/invert region '" + options_.region + "' does not exist");
