@@ -237,3 +237,24 @@ TEST(Invocation, ReportsPreExistingOverlapsAndLeavesThem)
   for (const auto &p : h.pos) found += (p == p1) + (p == p2);
   EXPECT_EQ(found, 2);
 }
+
+// Matrix spheres of radius 0 only: an impossible radius range, not "no
+// matrix" (which would silently do nothing).
+TEST(Invocation, ZeroRadiusMatrixIsAnError)
+{
+  MemoryHost h;
+  h.add({0.5, 0.5, 0.5}, 0.05, kGroup | kRebar);
+  h.add({0.52, 0.5, 0.5}, 0.0, kGroup);
+  EXPECT_THROW(run_invocation(h, parse_fix_arguments({"0", "bars"})), std::runtime_error);
+}
+
+// No matrix sphere at all: nothing to do, zero totals, one log line.
+TEST(Invocation, NoMatrixDoesNothing)
+{
+  MemoryHost h;
+  h.add({0.5, 0.5, 0.5}, 0.05, kGroup | kRebar);
+  const Totals t = run_invocation(h, parse_fix_arguments({"0", "bars"}));
+  EXPECT_EQ(t.stats.targets, 0);
+  EXPECT_EQ(t.stats.solves, 0);
+  EXPECT_EQ(h.logged.size(), 1u);
+}

@@ -58,12 +58,13 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
 
   // Radius range of the matrix and the largest sphere, over all processes.
   AtomArrays a = host.atoms();
-  double matrix_rmin = INFINITY, matrix_rmax = 0, largest = 0, rebar_count = 0;
+  double matrix_rmin = INFINITY, matrix_rmax = 0, largest = 0, rebar_count = 0, matrix_count = 0;
   for (int i = 0; i < a.nlocal; ++i) {
     largest = std::max(largest, a.radius[i]);
     if (a.mask[i] & a.rebar_bit) {
       rebar_count += 1;
     } else if (is_matrix(a, i)) {
+      matrix_count += 1;
       matrix_rmin = std::min(matrix_rmin, a.radius[i]);
       matrix_rmax = std::max(matrix_rmax, a.radius[i]);
     }
@@ -75,7 +76,7 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
   largest = host.max(largest);
 
   Totals totals;
-  if (matrix_rmax > 0) {    // else: no matrix sphere, nothing to relocate
+  if (host.sum(matrix_count) > 0) {    // else: no matrix sphere, nothing to relocate
     Settings settings;
     try {
       settings = make_settings(options, matrix_rmin, matrix_rmax);
