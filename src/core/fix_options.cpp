@@ -118,9 +118,11 @@ Settings make_settings(const FixOptions &o, double matrix_rmin, double matrix_rm
   Settings s;
   s.rmin = o.radius_set ? o.rmin : matrix_rmin;
   s.rmax = o.radius_set ? o.rmax : matrix_rmax;
-  if (!(s.rmin > 0) || !(s.rmax >= s.rmin) || !std::isfinite(s.rmax))
-    throw OptionError("Fix reinforce/invert: impossible radius range [" + std::to_string(s.rmin) +
-                      ", " + std::to_string(s.rmax) + "]");
+  if (!(s.rmin > 0) || !(s.rmax >= s.rmin) || !std::isfinite(s.rmax)) {
+    char range[120];
+    std::snprintf(range, sizeof range, "[%g, %g]", s.rmin, s.rmax);
+    throw OptionError(std::string("Fix reinforce/invert: impossible radius range ") + range);
+  }
   s.search = o.search_set ? o.search : 2 * s.rmax;
   s.tries = o.tries;
   s.choice = o.choice;
