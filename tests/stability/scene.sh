@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# One stability scene: make it with make_scene, then run_scene.sh on it.
-#   scene.sh NAME NP BUILD_DIR -- MAKE_SCENE_ARGS -- LAMMPS_VARS -- CHECK_ARGS
+# One scene: make it with make_scene, then run_scene.sh on it.
+#   scene.sh NAME NP BUILD_DIR -- MAKE_SCENE_ARGS -- HOST_VARS -- CHECK_ARGS
+# SCENE_HOST=liggghts runs liggghts_reinforce on liggghts/in.scene instead of
+# lmp_reinforce on stability/in.scene.
 set -euo pipefail
 name=$1 np=$2 build=$3
 shift 3
@@ -12,5 +14,10 @@ here=$(cd "$(dirname "$0")" && pwd)
 data=$(mktemp "${TMPDIR:-/tmp}/stability_${name}.XXXXXX.data")
 trap 'rm -f "$data"' EXIT
 "$build/tests/make_scene" "$data" "${make[@]}"
-"$here/../scripts/run_scene.sh" "$name" "$build/src/lammps/lmp_reinforce" "$np" "$here/in.scene" \
+if [ "${SCENE_HOST:-lammps}" = liggghts ]; then
+  exe="$build/src/liggghts/liggghts_reinforce" input="$here/../liggghts/in.scene"
+else
+  exe="$build/src/lammps/lmp_reinforce" input="$here/in.scene"
+fi
+"$here/../scripts/run_scene.sh" "$name" "$exe" "$np" "$input" \
   "$build/tests/check_scene" -- -var data "$data" "$@"
