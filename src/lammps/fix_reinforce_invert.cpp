@@ -64,6 +64,12 @@ void mark_doomed_atoms_for_exchange(Atom *atom, const std::vector<int> &pending)
     if (pending[i] == kDoomed) atom->x[i][0] = std::numeric_limits<double>::max();
 }
 
+// Comm keeps bordergroup protected. A class derived from it may name the
+// member through a pointer to member; no object of this class is made.
+struct CommAccess : Comm {
+  static int border_group_of(const Comm *c) { return c->*(&CommAccess::bordergroup); }
+};
+
 std::string format_length(double v)
 {
   return fmt::format("{:.6g}", v);
@@ -304,6 +310,9 @@ void FixReinforceInvert::check_styles()
   if (domain->triclinic) error->all(FLERR, me + "does not support triclinic boxes");
   if (comm->style != 0) error->all(FLERR, me + "requires comm_style brick");
   if (comm->mode != Comm::SINGLE) error->all(FLERR, me + "requires comm_modify mode single");
+  // Ghosts of one group only would hide neighbours from the relocation.
+  if (CommAccess::border_group_of(comm) != 0)
+    error->all(FLERR, me + "does not support comm_modify group");
 }
 
 void FixReinforceInvert::find_groups_and_region()

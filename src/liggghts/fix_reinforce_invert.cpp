@@ -17,6 +17,17 @@
 
 using namespace LAMMPS_NS;
 
+namespace {
+
+// Comm keeps style and bordergroup protected. A class derived from it may
+// name them through a pointer to member; no object of this class is made.
+struct CommAccess : Comm {
+  static int style_of(const Comm *c) { return c->*(&CommAccess::style); }
+  static int border_group_of(const Comm *c) { return c->*(&CommAccess::bordergroup); }
+};
+
+}    // namespace
+
 FixReinforceInvert::FixReinforceInvert(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
 {
   try {
@@ -49,7 +60,6 @@ FixReinforceInvert::FixReinforceInvert(LAMMPS *lmp, int narg, char **arg) : Fix(
 
   grow_arrays(atom->nmax);
   atom->add_callback(0);
-  for (int i = 0; i < atom->nmax; ++i) pending_[i] = 0;
 }
 
 FixReinforceInvert::~FixReinforceInvert()
@@ -68,6 +78,11 @@ int FixReinforceInvert::setmask()
 void FixReinforceInvert::init()
 {
   if (domain->triclinic) fail("Fix reinforce/invert does not support triclinic boxes");
+  // communicate multi ignores the raised ghost cutoff, and ghosts of one
+  // group only would hide neighbours: both would leave overlaps.
+  if (CommAccess::style_of(comm) != 0) fail("Fix reinforce/invert requires communicate single");
+  if (CommAccess::border_group_of(comm) != 0)
+    fail("Fix reinforce/invert does not support communicate group");
   region_ = nullptr;
   if (!options_.region.empty()) {
     const int r = domain->find_region(const_cast<char *>(options_.region.c_str()));
@@ -97,6 +112,9 @@ void FixReinforceInvert::pre_exchange()
 void FixReinforceInvert::invoke()
 {
   invoked_ = true;
+  // Atoms created since the last invocation (insert/pack, create_atoms)
+  // carry no flag yet: every flag starts clear.
+  std::fill(pending_, pending_ + nmax_, 0);
   if (region_) region_->prematch();
   const reinforce::Totals t = reinforce::run_invocation(*this, options_);
   output_ = reinforce::output_vector(t);
@@ -119,7 +137,10 @@ double FixReinforceInvert::compute_vector(int n)
 
 void FixReinforceInvert::grow_arrays(int nmax)
 {
+  const int old = pending_ ? nmax_ : 0;
   memory->grow(pending_, nmax, "reinforce/invert:pending");
+  std::fill(pending_ + old, pending_ + std::max(old, nmax), 0);
+  nmax_ = nmax;
 }
 
 void FixReinforceInvert::copy_arrays(int i, int j, int)

@@ -30,6 +30,7 @@ private:
   int rebar_bit_ = 0;
   class Region *region_ = nullptr;
   int *pending_ = nullptr;    // per atom: 1 = target waiting for a place
+  int nmax_ = 0;              // length of pending_
   std::array<double, reinforce::kOutputSize> output_ = {};
   bool invoked_ = false;
   double user_cutghost_ = -1;    // >= 0 while the ghost cutoff is raised
