@@ -36,7 +36,7 @@ done
   echo "walls, E = 10 MPa), or nothing. Then every method gets the same stiff run: frictionless Hertz,"
   echo "E = 30 GPa (concrete), no damping, bars frozen, time step 0.2 of the Rayleigh time of the"
   echo "smallest sphere, 1000 steps. Any overlap left becomes kinetic energy. The packing's own"
-  echo "overlaps from its compression (up to 1% of rmin) are there for every method."
+  echo "overlaps from its compression (below 1e-6 rmin) are there for every method."
   echo
   echo "| method | atoms | largest kinetic energy (J) | kinetic energy at the end (J) | whole run (s) |"
   echo "|---|---|---|---|---|"
