@@ -3,7 +3,7 @@
 # matrix_phi050.data.gz, matrix_phi060.data.gz and matrix_phi064.data.gz,
 # with Debian's lmp, serially (the random insertion and the dynamics depend
 # on the process count; one process gives the same file every time), and
-# the bars (data/bars.data). About 2, 3 and 3.5 minutes of one core
+# the bars (data/bars.data). About 2, 3 and 3 minutes of one core
 # (PACKING.md). Prints each packing's PACKING line and its times.
 #
 #   examples/beam/make_packings.sh [050 060 064]     (default: all three)

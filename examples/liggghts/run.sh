@@ -1,22 +1,40 @@
 #!/usr/bin/env bash
-# Runs the LIGGGHTS example twice (default radius range, and a wider one),
-# renders pictures with lmp and writes out/table.md.
-#   run.sh [path/to/liggghts_reinforce]
+# Runs the LIGGGHTS example three times: bars as plain rebar spheres with the
+# default radius range and with a wider one, and bars as fix multisphere
+# clumps. Renders a picture of each with Debian's lmp (LIGGGHTS 3.8 writes no
+# PNG) and writes out/table.md. About a minute on one core.
+#   run.sh [path/to/liggghts_reinforce]    (default: build/src/liggghts/liggghts_reinforce)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 exe=${1:-$here/../../build/src/liggghts/liggghts_reinforce}
+exe=$(cd "$(dirname "$exe")" && pwd)/$(basename "$exe")
+[ -x "$exe" ] || { echo "run.sh: no liggghts_reinforce at $exe (build it first)"; exit 1; }
 cd "$here"
 mkdir -p out
-rm -f out/row_*.md
-"$exe" -in in.liggghts -log out/log_default > out/screen_default.txt
-"$exe" -in in.liggghts -var extra "radius 0.0015 0.005" -var tag wide -log out/log_wide > out/screen_wide.txt
-for tag in default wide; do
-  lmp -in render.lmp -var data "out/liggghts_$tag.data" -var png "out/liggghts_$tag.png" -log none -screen none
+rm -f out/row_*.txt
+# LIGGGHTS 3.8 crashes in insert/pack under -screen none: redirect instead.
+run() {    # run TAG liggghts-args...
+  local tag=$1
+  shift
+  "$exe" -in in.liggghts -var tag "$tag" -log "out/log_$tag" "$@" > "out/screen_$tag.txt"
   grep '^fix reinforce/invert: [0-9]' "out/log_$tag"
-done
+  lmp -in render.lmp -var data "out/liggghts_$tag.data" -var png "out/liggghts_$tag.png" -log none -screen none
+}
+run default
+run wide -var extra "radius 0.0015 0.005"
+run multisphere -var bars multisphere
 {
-  echo "| run | matrix spheres after | solid fraction after | targets | relocated | deleted | largest overlap / rmin | relocation time (s) |"
-  echo "|---|---|---|---|---|---|---|---|"
-  cat out/row_default.md out/row_wide.md
+  echo "| run | bars | matrix spheres after | rebar spheres | solid fraction after | targets | relocated | deleted | largest overlap / rmin | relocation time (s) |"
+  echo "|---|---|---|---|---|---|---|---|---|---|"
+  for tag in default wide multisphere; do
+    case $tag in
+      default) bars="plain spheres" ;;
+      wide) bars="plain spheres, \`radius 0.0015 0.005\`" ;;
+      multisphere) bars="\`fix multisphere\` clumps" ;;
+    esac
+    awk -v bars="$bars" '$1 == "ROW" {
+      printf "| %s | %s | %d | %d | %.3f | %d | %d | %d | %.1e | %.3f |\n", $2, bars, $3, $4, $5, $6, $7, $8, $9, $10
+    }' "out/row_$tag.txt"
+  done
 } > out/table.md
 cat out/table.md

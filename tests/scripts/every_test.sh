@@ -10,7 +10,9 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/every.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 "$build/tests/make_scene" "$work/scene.data" --box 0 0.4 0 0.2 0 0.2 --radius 0.004 0.008 --fcc \
   --bar 0.01 0.07 0.1 0.39 0.07 0.1 0.005 0.0075
-(cd "$here/lammps" && mpirun -np "$np" "$build/src/lammps/lmp_reinforce" -in in.every \
+launch=(mpirun -np "$np")
+[ "$np" -eq 1 ] && launch=()    # serial: the executable itself
+(cd "$here/lammps" && "${launch[@]}" "$build/src/lammps/lmp_reinforce" -in in.every \
    -var data "$work/scene.data" -var out "$work" -log "$work/log" -screen none)
 grep '^fix reinforce/invert: [0-9]' "$work/log"
 invocations=$(grep -c '^fix reinforce/invert: [0-9]' "$work/log")

@@ -6,9 +6,34 @@
 # The input must write $out/before.dump (the scene as read) and
 # $out/after.dump (after the fix), and report the fix's totals with
 #   print "TOTALS ${targets} ${relocated} ${deleted} ${kept}"
-# The script checks the dumps (no overlap, radii, atom conservation, rebar
-# untouched), that the deleted count the fix reports is what disappeared,
-# and, run twice, that the output is identical.
+# Checked, on the written result:
+#  * the checker (no overlap above tol, radii, walls, atom conservation with
+#    the deleted count the fix reports, rebar untouched), and its counts
+#    against the fix's: spheres moved = relocated, targets left on a bar =
+#    kept (unless SCENE_KEPT_ANY=1: atoms outside the fix group may be left
+#    on a bar too);
+#  * targets = relocated + deleted + kept, one summary line in the log;
+#  * moved spheres keep their density (mass scaled with the volume), when
+#    the dumps have a mass column; with a STATS line, f_ID[5] and f_ID[6]
+#    are the volumes of the targets and of the relocated spheres written,
+#    and f_ID[7] is no smaller than the largest overlap the checker finds
+#    for a moved sphere (with no kept targets: their overlaps are allowed);
+#  * run twice, identical atoms and identical totals.
+# Optional lines the input may print, checked when present:
+#   print "STATS f1 ... f8 f10"     printed (the stability tests match it)
+#   print "ATOMS $(atoms)"          LAMMPS's atom count = atoms in after.dump
+#   print "ONCE f1 f2 f3 f4"        after a second run with the same N = 0 fix:
+#                                   same totals, no second summary line
+#   print "AGAIN t r d k atoms"     a fresh fix afterwards: its targets are
+#                                   exactly the kept ones
+# and when after.dump has a c_disp[4] column (compute displace/atom defined
+# before the fix), it must equal the distance each atom moved between the
+# dumps: other fixes' per-atom data follow the atoms through the deletions.
+# SCENE_POST="command args": run as `command args BEFORE AFTER` at the end;
+# with SCENE_REFERENCE=1 also given the after dump of the same input run on
+# one process (-var procs "1 1 1", and -var setup "$SCENE_REFERENCE_SETUP"
+# when that is set: a setup command that needs several processes), as a
+# third file.
 set -euo pipefail
 name=$1 exe=$2 np=$3 input=$4 checker=$5
 shift 5
@@ -23,20 +48,140 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/scene_${name}.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 indir=$(cd "$(dirname "$input")" && pwd)
 
-run() {    # run OUTDIR
-  mkdir -p "$1"
-  (cd "$indir" && mpirun -np "$np" "$exe" -in "$input" -log "$1/log" -screen none \
-     -var out "$1" "${vars[@]}") || { echo "FAIL: $exe exited non-zero"; tail -5 "$1/log"; exit 1; }
+fail() { echo "FAIL: $*"; exit 1; }
+run() {    # run OUTDIR [NP [first lmp args]]
+  local dir=$1 n=${2:-$np}
+  shift; [ $# -gt 0 ] && shift
+  mkdir -p "$dir"
+  local launch=(mpirun -np "$n")
+  [ "$n" -eq 1 ] && launch=()    # serial: the executable itself (no mpirun start-up)
+  (cd "$indir" && "${launch[@]}" "$exe" -in "$input" -log "$dir/log" -screen none \
+     -var out "$dir" "$@" "${vars[@]}") || { echo "FAIL: $exe exited non-zero"; tail -5 "$dir/log"; exit 1; }
 }
+last() { grep "^$1 " "$2" | tail -1 || true; }    # last line starting with a word
+
 run "$work/a"
-totals=$(grep '^TOTALS' "$work/a/log" | tail -1)
-[ -n "$totals" ] || { echo "FAIL: no TOTALS line in the log"; tail -5 "$work/a/log"; exit 1; }
+log=$work/a/log
+totals=$(last TOTALS "$log")
+[ -n "$totals" ] || { echo "FAIL: no TOTALS line in the log"; tail -5 "$log"; exit 1; }
 read -r _ targets relocated deleted kept <<<"$totals"
-grep -q '^fix reinforce/invert: ' "$work/a/log" || { echo "FAIL: no summary line"; exit 1; }
+summaries=$(grep -c '^fix reinforce/invert: [0-9]' "$log" || true)
+[ "$summaries" -ge 1 ] || fail "no summary line"
 echo "$name np=$np: targets $targets relocated $relocated deleted $deleted kept $kept"
-[ "$targets" -eq $((relocated + deleted + kept)) ] || { echo "FAIL: targets != relocated + deleted + kept"; exit 1; }
-"$checker" --before "$work/a/before.dump" --after "$work/a/after.dump" --deleted "$deleted" "${check_args[@]}"
+last STATS "$log"
+[ "$targets" -eq $((relocated + deleted + kept)) ] || fail "targets != relocated + deleted + kept"
+
+"$checker" --before "$work/a/before.dump" --after "$work/a/after.dump" --deleted "$deleted" \
+  "${check_args[@]}" | tee "$work/check" || fail "the checker failed (above)"
+read -r moved ckept < <(awk '/^SUMMARY/ {
+    for (i = 1; i < NF; i++) { if ($i == "moved") m = $(i + 1); if ($i == "kept") k = $(i + 1) }
+    print m, k }' "$work/check")
+[ "$moved" = "$relocated" ] || fail "the checker sees $moved spheres moved, the fix reports $relocated relocated"
+if [ "${SCENE_KEPT_ANY:-0}" != 1 ]; then
+  [ "$ckept" = "$kept" ] || fail "the checker sees $ckept targets left on a bar, the fix reports $kept kept"
+  echo "PASS: moved = relocated ($moved), left on a bar = kept ($kept)"
+else
+  echo "PASS: moved = relocated ($moved); $ckept matrix spheres left on a bar, $kept of them kept targets"
+fi
+
+# The fix's reported volumes and residual overlap against the dumps, and the
+# mass of each moved sphere (scaled with its volume: same density).
+stats=$(last STATS "$log")
+awk -v stats="$stats" -v kept="$kept" -v check="$(grep '^SUMMARY' "$work/check")" '
+  function vol(r) { return 4.188790204786391 * r * r * r }    # 4 pi / 3 r^3
+  function rel(a, b,   d, m) { d = a - b; if (d < 0) d = -d; m = (a < 0 ? -a : a); if ((b < 0 ? -b : b) > m) m = (b < 0 ? -b : b); return m > 0 ? d / m : 0 }
+  FNR == 1 { file++ }
+  /^ITEM: ATOMS/ { delete c; for (i = 3; i <= NF; i++) c[$i] = i - 2; body = 1; next }
+  /^ITEM:/ { body = 0; next }
+  !body { next }
+  file == 1 { id = $c["id"]; type[id] = $c["type"]; r[id] = $c["radius"]; m[id] = ("mass" in c) ? $c["mass"] : ""
+              key[id] = $c["x"] " " $c["y"] " " $c["z"] " " $c["radius"]; next }
+  {
+    id = $c["id"]; seen[id] = 1
+    if ($c["x"] " " $c["y"] " " $c["z"] " " $c["radius"] == key[id]) next
+    moved++; v6 += vol($c["radius"]); v5 += vol(r[id])
+    if (("mass" in c) && m[id] != "") {
+      e = rel($c["mass"] / vol($c["radius"]), m[id] / vol(r[id]))
+      if (e > 1e-12) { bad_mass++; if (bad_mass <= 3) print "atom " id ": density " m[id] / vol(r[id]) " -> " $c["mass"] / vol($c["radius"]) }
+      masses++
+    }
+  }
+  END {
+    for (id in type) if (type[id] != 2 && !(id in seen)) v5 += vol(r[id])    # deleted targets
+    fail = 0
+    if (bad_mass) { print "FAIL: " bad_mass " moved spheres changed their density (mass not scaled with the volume)"; fail = 1 }
+    else if (masses) print "PASS: " masses " moved spheres kept their density"
+    if (split(stats, f, " ") >= 8) {
+      if (rel(f[7], v6) > 1e-9) { print "FAIL: f_ID[6] = " f[7] ", the relocated spheres written hold " v6; fail = 1 }
+      else if (kept == 0 && rel(f[6], v5) > 1e-9) { print "FAIL: f_ID[5] = " f[6] ", the targets (moved or deleted) held " v5; fail = 1 }
+      else print "PASS: f_ID[5], f_ID[6] = the volumes of the dumps" (kept == 0 ? "" : " (f_ID[6] only: targets kept)")
+      n = split(check, w, " ")
+      for (i = 1; i < n; i++) if (w[i] == "max_overlap_moved") written = w[i + 1]
+      if (kept == 0 && written != "") {
+        # f_ID[7] is honest: no moved sphere written overlaps more than it says
+        # (1% for the checker'"'"'s 3 digits and an rmin of the checker'"'"'s).
+        if (written + 0 > 1.01 * f[8] + 1e-12) { print "FAIL: f_ID[7] = " f[8] " rmin, the written spheres overlap by " written " rmin"; fail = 1 }
+        else print "PASS: f_ID[7] = " f[8] " >= the largest overlap written (" written ")"
+      }
+    }
+    exit fail
+  }' "$work/a/before.dump" "$work/a/after.dump" || exit 1
+
+dumped=$(awk '/^ITEM: NUMBER OF ATOMS/ {getline; n = $1} END {print n}' "$work/a/after.dump")
+atoms=$(last ATOMS "$log")
+if [ -n "$atoms" ]; then
+  [ "${atoms#ATOMS }" = "$dumped" ] || fail "LAMMPS counts ${atoms#ATOMS } atoms, after.dump holds $dumped"
+  echo "PASS: atom count $dumped"
+fi
+once=$(last ONCE "$log")
+if [ -n "$once" ]; then
+  [ "${once#ONCE }" = "${totals#TOTALS }" ] || fail "a second run changed the totals: $once"
+fi
+again=$(last AGAIN "$log")
+if [ -n "$again" ]; then
+  read -r _ t2 r2 d2 k2 atoms2 <<<"$again"
+  [ "$summaries" -eq 2 ] || fail "$summaries summary lines, expected 2 (one per fix, N = 0)"
+  [ "$t2" -eq "$kept" ] || fail "a fresh fix finds $t2 targets, expected the $kept kept ones"
+  [ "$t2" -eq $((r2 + d2 + k2)) ] || fail "fresh fix: targets != relocated + deleted + kept"
+  echo "PASS: once per fix; a fresh fix finds $t2 targets (= kept), then $atoms2 atoms"
+fi
+awk -v tol=1e-9 '
+  /^ITEM: BOX BOUNDS/ { for (k = 1; k <= 3; k++) { getline; len[k] = $2 - $1 }; next }
+  /^ITEM: ATOMS/ { ncol = 0; delete c; for (i = 3; i <= NF; i++) c[$i] = i - 2; body = 1; next }
+  /^ITEM:/ { body = 0; next }
+  !body { next }
+  FNR == NR { bx[$c["id"]] = $c["x"]; by[$c["id"]] = $c["y"]; bz[$c["id"]] = $c["z"]; next }
+  !("c_disp[4]" in c) { exit }
+  {
+    has = 1; id = $c["id"]; d[1] = $c["x"] - bx[id]; d[2] = $c["y"] - by[id]; d[3] = $c["z"] - bz[id]
+    s = 0
+    for (k = 1; k <= 3; k++) {
+      while (d[k] > len[k] / 2) d[k] -= len[k]    # a periodic wrap is no move
+      while (d[k] < -len[k] / 2) d[k] += len[k]
+      s += d[k] * d[k]
+    }
+    e = sqrt(s) - $c["c_disp[4]"]; if (e < 0) e = -e
+    if (e > tol * (len[1] + len[2] + len[3])) { bad++; if (bad <= 3) print "atom " id ": moved " sqrt(s) ", displace/atom says " $c["c_disp[4]"] }
+  }
+  END {
+    if (bad) { print "FAIL: displace/atom disagrees with the dumps for " bad " atoms"; exit 1 }
+    if (has) print "PASS: displace/atom agrees with the dumps (per-atom data followed the atoms)"
+  }' "$work/a/before.dump" "$work/a/after.dump" || exit 1
+if [ -n "${SCENE_POST:-}" ]; then
+  reference=()
+  if [ "${SCENE_REFERENCE:-0}" = 1 ]; then    # the same input on one process
+    ref_args=(-var procs "1 1 1")               # (the first -var of a name wins)
+    [ -n "${SCENE_REFERENCE_SETUP:-}" ] && ref_args+=(-var setup "$SCENE_REFERENCE_SETUP")
+    run "$work/ref" 1 "${ref_args[@]}"
+    reference=("$work/ref/after.dump")
+  fi
+  # shellcheck disable=SC2086    # a command and its arguments
+  ${SCENE_POST} "$work/a/before.dump" "$work/a/after.dump" "${reference[@]}" || fail "$SCENE_POST"
+fi
 
 run "$work/b"
-"$checker" --same "$work/a/after.dump" "$work/b/after.dump"
+"$checker" --same "$work/a/after.dump" "$work/b/after.dump" || fail "the two runs differ"
+for word in TOTALS STATS; do
+  [ "$(last $word "$log")" = "$(last $word "$work/b/log")" ] || fail "the two runs report different $word"
+done
 echo "PASS $name np=$np"

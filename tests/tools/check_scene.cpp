@@ -1,20 +1,25 @@
 // Checks a scene written by LAMMPS or LIGGGHTS before and after fix
-// reinforce/invert (text dumps: `dump ... custom ... id type x y z radius
-// [mass]`, sorted or not; the last snapshot of a file is used).
+// reinforce/invert. Input: text dumps written by
+//   dump ID all custom N FILE id type x y z radius [mass]
+//   dump_modify ID sort id format float %.17g      (sorting optional)
+// (write_dump works too). A file with several snapshots: the last is used.
+// Standalone C++17, no host headers. Usage and checks: tests/tools/README.md.
 //
 //   check_scene --before B --after A [--rebar-type T] [--tol 1e-6]
-//               [--rmin R --rmax R] [--deleted N] [--kept-ok]
-//       asserts: no moved sphere overlaps any sphere by more than
-//       tol * min(r_i, r_j); no matrix sphere overlaps a rebar sphere
-//       (unless --kept-ok: targets left in place); moved radii in
-//       [rmin, rmax]; rebar untouched; no new atoms, types unchanged;
-//       before = after + deleted (and deleted = N if given).
-//   check_scene --same A B      the two dumps hold identical atoms (text)
+//               [--rmin R] [--rmax R] [--deleted N] [--kept-ok]
+//               [--overlap-ok-before | --clean-before]
+//   check_scene --same A B        the two dumps hold identical atoms (text)
 //   check_scene --stats D [--rebar-type T] [--rmin R]
-//       prints the largest overlaps (matrix-rebar, matrix-matrix), no test
+//       one line: atoms N matrix M max_matrix_rebar X max_matrix_matrix Y
+//       (largest overlaps / rmin; the format is parsed by bench/run.sh)
+//   check_scene --packing D [--rebar-type T] [--rmin R]
+//       describes a packing (counts, radii, solid fraction, overlaps, wall
+//       penetration), no test
 //
-// Periodic dimensions (BOX BOUNDS flag p) use the minimum image. Exit
-// status 0 = every check passed, 1 = a check failed, 2 = bad usage/input.
+// Overlap of spheres i, j: d = r_i + r_j - |x_i - x_j| (minimum image in
+// periodic dimensions, "pp" in the BOX BOUNDS line); a pair overlaps when
+// d > tol * min(r_i, r_j). Exit status: 0 every check passed, 1 a check
+// failed, 2 bad usage or unreadable input.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -33,13 +38,37 @@ struct Atom {
   int type = 0;
   double x[3] = {0, 0, 0};
   double r = 0;
-  std::string text;    // the dump line, for --same
+  std::string text;    // id, type, x, y, z and radius as written, for --same
 };
 
 struct Dump {
+  std::string path;
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
   bool periodic[3] = {false, false, false};
-  std::vector<Atom> atoms;    // sorted by id
+  bool fixed[3] = {false, false, false};    // "ff": a wall at each face
+  std::vector<Atom> atoms;                  // sorted by id
+  std::unordered_map<long, std::size_t> index;
+
+  double length(int k) const { return hi[k] - lo[k]; }
+  const Atom *find(long id) const
+  {
+    auto it = index.find(id);
+    return it == index.end() ? nullptr : &atoms[it->second];
+  }
+  // Displacement a - b, minimum image in periodic dimensions.
+  void delta(const double *a, const double *b, double *d) const
+  {
+    for (int k = 0; k < 3; ++k) {
+      d[k] = a[k] - b[k];
+      if (periodic[k]) d[k] -= length(k) * std::round(d[k] / length(k));
+    }
+  }
+  double overlap(const Atom &a, const Atom &b) const
+  {
+    double d[3];
+    delta(a.x, b.x, d);
+    return a.r + b.r - std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  }
 };
 
 [[noreturn]] void bad(const std::string &why)
@@ -48,135 +77,177 @@ struct Dump {
   std::exit(2);
 }
 
+double to_double(const std::string &s, const std::string &what)
+{
+  char *end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  if (s.empty() || *end || !std::isfinite(v)) bad(what + ": not a finite number: '" + s + "'");
+  return v;
+}
+
+long to_long(const std::string &s, const std::string &what)
+{
+  char *end = nullptr;
+  const long v = std::strtol(s.c_str(), &end, 10);
+  if (s.empty() || *end) bad(what + ": not an integer: '" + s + "'");
+  return v;
+}
+
+std::vector<std::string> split(const std::string &line)
+{
+  std::istringstream in(line);
+  std::vector<std::string> f;
+  for (std::string w; in >> w;) f.push_back(w);
+  return f;
+}
+
+// Reads the last snapshot of a LAMMPS text dump.
 Dump read_dump(const std::string &path)
 {
   std::ifstream in(path);
   if (!in) bad("cannot read " + path);
   Dump last;
-  std::string line;
   bool any = false;
+  std::string line;
+  long lineno = 0;
+  auto next_line = [&](const char *what) {
+    if (!std::getline(in, line)) bad(path + ": truncated (expected " + what + ")");
+    ++lineno;
+    return line;
+  };
   while (std::getline(in, line)) {
-    if (line.rfind("ITEM: NUMBER OF ATOMS", 0) == 0) {
-      Dump d;
-      long n = 0;
-      if (!(in >> n)) bad(path + ": bad atom count");
-      std::getline(in, line);
-      std::getline(in, line);
-      if (line.rfind("ITEM: BOX BOUNDS", 0) != 0) bad(path + ": no BOX BOUNDS");
-      std::istringstream flags(line.substr(16));
-      for (int k = 0; k < 3; ++k) {
-        std::string f;
-        flags >> f;
-        d.periodic[k] = f == "pp";
-      }
-      for (int k = 0; k < 3; ++k) {
-        std::getline(in, line);
-        std::istringstream b(line);
-        if (!(b >> d.lo[k] >> d.hi[k])) bad(path + ": bad box bounds");
-      }
-      std::getline(in, line);
-      if (line.rfind("ITEM: ATOMS", 0) != 0) bad(path + ": no ATOMS header");
-      std::istringstream cols(line.substr(11));
-      std::map<std::string, int> col;
-      std::string name;
-      for (int c = 0; cols >> name; ++c) col[name] = c;
-      for (const char *need : {"id", "type", "x", "y", "z", "radius"})
-        if (!col.count(need)) bad(path + ": dump lacks column " + need);
-      for (long a = 0; a < n; ++a) {
-        if (!std::getline(in, line)) bad(path + ": truncated");
-        std::istringstream v(line);
-        std::vector<std::string> f;
-        std::string w;
-        while (v >> w) f.push_back(w);
-        if (static_cast<int>(f.size()) < static_cast<int>(col.size())) bad(path + ": short line");
-        Atom at;
-        at.id = std::stol(f[col["id"]]);
-        at.type = std::stoi(f[col["type"]]);
-        at.x[0] = std::stod(f[col["x"]]);
-        at.x[1] = std::stod(f[col["y"]]);
-        at.x[2] = std::stod(f[col["z"]]);
-        at.r = std::stod(f[col["radius"]]);
-        std::ostringstream t;
-        for (const std::string &s : f) t << s << ' ';
-        at.text = t.str();
-        d.atoms.push_back(at);
-      }
-      std::sort(d.atoms.begin(), d.atoms.end(),
-                [](const Atom &a, const Atom &b) { return a.id < b.id; });
-      last = d;
-      any = true;
+    ++lineno;
+    if (line.rfind("ITEM: NUMBER OF ATOMS", 0) != 0) continue;
+    Dump d;
+    d.path = path;
+    const long n = to_long(split(next_line("atom count")).at(0), path + ": atom count");
+    next_line("BOX BOUNDS");
+    if (line.rfind("ITEM: BOX BOUNDS", 0) != 0) bad(path + ": no BOX BOUNDS after the atom count");
+    const std::vector<std::string> flags = split(line.substr(16));
+    if (flags.size() != 3)
+      bad(path + ": triclinic or malformed BOX BOUNDS (orthogonal boxes only)");
+    for (int k = 0; k < 3; ++k) {
+      d.periodic[k] = flags[k] == "pp";
+      d.fixed[k] = flags[k] == "ff";
     }
+    for (int k = 0; k < 3; ++k) {
+      const std::vector<std::string> b = split(next_line("box bounds"));
+      if (b.size() != 2) bad(path + ": bad box bounds line " + std::to_string(lineno));
+      d.lo[k] = to_double(b[0], path + ": box");
+      d.hi[k] = to_double(b[1], path + ": box");
+      if (!(d.hi[k] > d.lo[k])) bad(path + ": empty box");
+    }
+    next_line("ATOMS header");
+    if (line.rfind("ITEM: ATOMS", 0) != 0) bad(path + ": no ATOMS header");
+    const std::vector<std::string> names = split(line.substr(11));
+    std::map<std::string, std::size_t> col;
+    for (std::size_t c = 0; c < names.size(); ++c) col[names[c]] = c;
+    for (const char *need : {"id", "type", "x", "y", "z", "radius"})
+      if (!col.count(need)) bad(path + ": dump lacks column " + need);
+    const std::size_t cid = col["id"], ctype = col["type"], cx = col["x"], cy = col["y"],
+                      cz = col["z"], cr = col["radius"];
+    d.atoms.reserve(static_cast<std::size_t>(std::max(0L, n)));
+    for (long a = 0; a < n; ++a) {
+      const std::vector<std::string> f = split(next_line("an atom line"));
+      if (f.size() != names.size())
+        bad(path + ": line " + std::to_string(lineno) + " has " + std::to_string(f.size()) +
+            " columns, the header names " + std::to_string(names.size()));
+      Atom at;
+      const std::string where = path + ":" + std::to_string(lineno);
+      at.id = to_long(f[cid], where);
+      at.type = static_cast<int>(to_long(f[ctype], where));
+      at.x[0] = to_double(f[cx], where);
+      at.x[1] = to_double(f[cy], where);
+      at.x[2] = to_double(f[cz], where);
+      at.r = to_double(f[cr], where);
+      if (!(at.r > 0)) bad(where + ": radius must be positive");
+      at.text = f[cid] + ' ' + f[ctype] + ' ' + f[cx] + ' ' + f[cy] + ' ' + f[cz] + ' ' + f[cr];
+      d.atoms.push_back(std::move(at));
+    }
+    std::sort(d.atoms.begin(), d.atoms.end(),
+              [](const Atom &a, const Atom &b) { return a.id < b.id; });
+    for (std::size_t i = 0; i < d.atoms.size(); ++i)
+      if (!d.index.emplace(d.atoms[i].id, i).second)
+        bad(path + ": atom id " + std::to_string(d.atoms[i].id) + " appears twice");
+    last = std::move(d);
+    any = true;
   }
-  if (!any) bad(path + ": no snapshot");
+  if (!any) bad(path + ": no snapshot (no 'ITEM: NUMBER OF ATOMS')");
   return last;
 }
 
-// Calls f(i, j, overlap) for every pair closer than r_i + r_j (i < j),
-// minimum image in periodic dimensions, via a cell grid.
+// Calls f(i, j, overlap) once for every pair i < j closer than r_i + r_j
+// (overlap > 0), minimum image in periodic dimensions, through a cell grid
+// of cell size >= 2 * the largest radius.
 template <class F> void for_each_contact(const Dump &d, F &&f)
 {
   const std::vector<Atom> &a = d.atoms;
-  double rmax = 0;
-  for (const Atom &at : a) rmax = std::max(rmax, at.r);
-  if (a.empty() || !(rmax > 0)) return;
-  const double cell = 2 * rmax;
+  if (a.empty()) return;
+  double rmax = 0, lo[3], hi[3];
+  for (int k = 0; k < 3; ++k) lo[k] = hi[k] = a[0].x[k];
+  for (const Atom &at : a) {
+    rmax = std::max(rmax, at.r);
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], at.x[k]);
+      hi[k] = std::max(hi[k], at.x[k]);
+    }
+  }
+  double cell = 2 * rmax;
   long n[3];
-  double size[3];
-  for (int k = 0; k < 3; ++k) {
-    const double len = d.hi[k] - d.lo[k];
-    n[k] = d.periodic[k] ? std::max(1L, static_cast<long>(len / cell)) : 0;
-    size[k] = d.periodic[k] ? len / n[k] : cell;
+  double origin[3], size[3];
+  for (;;) {
+    double cells = 1;
+    for (int k = 0; k < 3; ++k) {
+      if (d.periodic[k]) {
+        origin[k] = d.lo[k];
+        n[k] = std::max(1L, static_cast<long>(d.length(k) / cell));
+        size[k] = d.length(k) / static_cast<double>(n[k]);
+      } else {
+        origin[k] = lo[k];
+        size[k] = cell;
+        n[k] = static_cast<long>((hi[k] - lo[k]) / cell) + 1;
+      }
+      cells *= static_cast<double>(n[k]);
+    }
+    if (cells <= 4.0 * static_cast<double>(a.size()) + 1000) break;
+    cell *= 1.5;    // very sparse scene: fewer, larger cells
   }
   auto coord = [&](const double *x, int k) {
-    long c = static_cast<long>(std::floor((x[k] - d.lo[k]) / size[k]));
+    long c = static_cast<long>(std::floor((x[k] - origin[k]) / size[k]));
     if (d.periodic[k]) c = ((c % n[k]) + n[k]) % n[k];
-    return c;
+    return std::min(std::max(c, 0L), n[k] - 1);
   };
-  auto key = [](long i, long j, long k) {
-    return (i * 73856093L) ^ (j * 19349663L) ^ (k * 83492791L);
-  };
-  std::unordered_map<long, std::vector<int>> grid;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    grid[key(coord(a[i].x, 0), coord(a[i].x, 1), coord(a[i].x, 2))].push_back(static_cast<int>(i));
+  const std::size_t ncells = static_cast<std::size_t>(n[0] * n[1] * n[2]);
+  std::vector<long> head(ncells, -1), next(a.size(), -1);
   for (std::size_t i = 0; i < a.size(); ++i) {
-    long c[3];
-    for (int k = 0; k < 3; ++k) c[k] = coord(a[i].x, k);
+    const std::size_t c = static_cast<std::size_t>(
+        (coord(a[i].x, 2) * n[1] + coord(a[i].x, 1)) * n[0] + coord(a[i].x, 0));
+    next[i] = head[c];
+    head[c] = static_cast<long>(i);
+  }
+  for (std::size_t i = 0; i < a.size(); ++i) {
     std::vector<long> range[3];
     for (int k = 0; k < 3; ++k) {
+      const long c = coord(a[i].x, k);
       for (long dc = -1; dc <= 1; ++dc) {
-        long v = c[k] + dc;
-        if (d.periodic[k]) v = ((v % n[k]) + n[k]) % n[k];
+        long v = c + dc;
+        if (d.periodic[k])
+          v = ((v % n[k]) + n[k]) % n[k];
+        else if (v < 0 || v >= n[k])
+          continue;
         if (std::find(range[k].begin(), range[k].end(), v) == range[k].end()) range[k].push_back(v);
       }
     }
-    for (long ci : range[0])
-      for (long cj : range[1])
-        for (long ck : range[2]) {
-          auto it = grid.find(key(ci, cj, ck));
-          if (it == grid.end()) continue;
-          for (int j : it->second) {
-            if (j <= static_cast<int>(i)) continue;
-            double dist2 = 0;
-            for (int k = 0; k < 3; ++k) {
-              double dx = a[i].x[k] - a[j].x[k];
-              if (d.periodic[k]) {
-                const double len = d.hi[k] - d.lo[k];
-                dx -= len * std::round(dx / len);
-              }
-              dist2 += dx * dx;
-            }
-            const double overlap = a[i].r + a[j].r - std::sqrt(dist2);
-            if (overlap > 0) f(static_cast<int>(i), j, overlap);
+    for (long cz : range[2])
+      for (long cy : range[1])
+        for (long cx : range[0])
+          for (long j = head[static_cast<std::size_t>((cz * n[1] + cy) * n[0] + cx)]; j >= 0;
+               j = next[static_cast<std::size_t>(j)]) {
+            if (j <= static_cast<long>(i)) continue;
+            const double o = d.overlap(a[i], a[static_cast<std::size_t>(j)]);
+            if (o > 0) f(i, static_cast<std::size_t>(j), o);
           }
-        }
   }
-}
-
-const Atom *find(const Dump &d, long id)
-{
-  auto it = std::lower_bound(d.atoms.begin(), d.atoms.end(), id,
-                             [](const Atom &a, long v) { return a.id < v; });
-  return it != d.atoms.end() && it->id == id ? &*it : nullptr;
 }
 
 int failures = 0;
@@ -193,15 +264,270 @@ std::string num(double v)
   return b;
 }
 
+std::string str(long v)
+{
+  return std::to_string(v);
+}
+
+// Same place and size: equal radius, and equal position up to 1e-12 of the
+// box length (a periodic wrap of an unmoved atom does not count as a move).
+bool same_place(const Dump &box, const Atom &a, const Atom &b)
+{
+  if (a.r != b.r) return false;
+  double d[3];
+  box.delta(a.x, b.x, d);
+  for (int k = 0; k < 3; ++k)
+    if (std::fabs(d[k]) > 1e-12 * box.length(k)) return false;
+  return true;
+}
+
+struct Options {
+  std::string before, after, same_a, same_b, stats, packing;
+  int rebar_type = 2;
+  double tol = 1e-6, rmin = 0, rmax = 0;
+  long deleted = -1;
+  bool kept_ok = false, clean_before = false;
+};
+
+int run_same(const Options &o)
+{
+  const Dump a = read_dump(o.same_a), b = read_dump(o.same_b);
+  std::string why;
+  if (a.atoms.size() != b.atoms.size())
+    why = str(static_cast<long>(a.atoms.size())) + " vs " + str(static_cast<long>(b.atoms.size())) +
+          " atoms";
+  for (std::size_t i = 0; why.empty() && i < a.atoms.size(); ++i)
+    if (a.atoms[i].text != b.atoms[i].text)
+      why = "first difference: '" + a.atoms[i].text + "' vs '" + b.atoms[i].text + "'";
+  check(why.empty(), "identical atoms in " + o.same_a + " and " + o.same_b +
+                         (why.empty() ? " (" + str(static_cast<long>(a.atoms.size())) + " atoms)"
+                                      : " (" + why + ")"));
+  return failures ? 1 : 0;
+}
+
+int run_stats(const Options &o, bool describe)
+{
+  const Dump d = read_dump(describe ? o.packing : o.stats);
+  double rmin = o.rmin, smallest = INFINITY, largest = 0, volume = 0;
+  long nm = 0;
+  for (const Atom &a : d.atoms)
+    if (a.type != o.rebar_type) {
+      smallest = std::min(smallest, a.r);
+      largest = std::max(largest, a.r);
+      volume += 4.0 / 3.0 * 3.14159265358979323846 * a.r * a.r * a.r;
+      ++nm;
+    }
+  if (rmin <= 0) rmin = smallest;
+  double mr = 0, mm = 0;
+  long nmm = 0;
+  for_each_contact(d, [&](std::size_t i, std::size_t j, double ov) {
+    const bool ri = d.atoms[i].type == o.rebar_type, rj = d.atoms[j].type == o.rebar_type;
+    if (ri && rj) return;
+    if (ri || rj)
+      mr = std::max(mr, ov / rmin);
+    else {
+      mm = std::max(mm, ov / rmin);
+      if (ov > o.tol * std::min(d.atoms[i].r, d.atoms[j].r)) ++nmm;
+    }
+  });
+  if (!describe) {
+    std::printf("atoms %zu matrix %ld max_matrix_rebar %.6g max_matrix_matrix %.6g\n",
+                d.atoms.size(), nm, mr, mm);
+    return 0;
+  }
+  double wall = -INFINITY;    // largest penetration of a matrix sphere through a wall
+  for (const Atom &a : d.atoms)
+    if (a.type != o.rebar_type)
+      for (int k = 0; k < 3; ++k)
+        if (d.fixed[k]) wall = std::max({wall, d.lo[k] - (a.x[k] - a.r), a.x[k] + a.r - d.hi[k]});
+  const double box = d.length(0) * d.length(1) * d.length(2);
+  std::printf("atoms %zu matrix %ld\n", d.atoms.size(), nm);
+  std::printf("matrix radius min %.17g max %.17g\n", smallest, largest);
+  std::printf("box %.17g %.17g %.17g to %.17g %.17g %.17g\n", d.lo[0], d.lo[1], d.lo[2], d.hi[0],
+              d.hi[1], d.hi[2]);
+  std::printf("solid fraction of the matrix %.6f\n", volume / box);
+  std::printf("largest overlap / rmin: matrix-matrix %.3g, matrix-rebar %.3g (rmin %.6g)\n", mm, mr,
+              rmin);
+  std::printf("matrix-matrix pairs overlapping above tol %.3g: %ld\n", o.tol, nmm);
+  if (wall > -INFINITY)
+    std::printf("largest reach of a matrix sphere through a wall / rmin: %.3g (%s)\n", wall / rmin,
+                wall <= 0 ? "all spheres wholly inside" : "OUTSIDE");
+  return 0;
+}
+
+int run_check(Options o)
+{
+  const Dump before = read_dump(o.before), after = read_dump(o.after);
+  const int rebar = o.rebar_type;
+
+  // The accepted radius range: given, or that of the matrix before (the
+  // fix's default).
+  const bool given_range = o.rmin > 0 && o.rmax > 0;
+  if (!given_range) {
+    double lo = INFINITY, hi = 0;
+    for (const Atom &a : before.atoms)
+      if (a.type != rebar) {
+        lo = std::min(lo, a.r);
+        hi = std::max(hi, a.r);
+      }
+    if (o.rmin <= 0) o.rmin = lo;
+    if (o.rmax <= 0) o.rmax = hi;
+  }
+  const double rmin = o.rmin > 0 && std::isfinite(o.rmin) ? o.rmin : 1;
+
+  // Moved (position or radius changed), new and retyped atoms; deletions.
+  std::vector<char> moved(after.atoms.size(), 0);
+  long new_atoms = 0, retyped = 0, moved_count = 0, deleted = 0;
+  for (std::size_t i = 0; i < after.atoms.size(); ++i) {
+    const Atom &a = after.atoms[i];
+    const Atom *b = before.find(a.id);
+    if (!b) {
+      ++new_atoms;
+      moved[i] = 1;
+      continue;
+    }
+    if (b->type != a.type) ++retyped;
+    moved[i] = !same_place(after, *b, a);
+    moved_count += moved[i];
+  }
+  for (const Atom &b : before.atoms)
+    if (!after.find(b.id)) ++deleted;
+
+  // Kept targets: matrix spheres left in place that overlap a bar.
+  std::vector<char> kept(after.atoms.size(), 0);
+  long kept_count = 0;
+  double worst_kept = 0;
+  for_each_contact(after, [&](std::size_t i, std::size_t j, double ov) {
+    const Atom &a = after.atoms[i], &b = after.atoms[j];
+    if ((a.type == rebar) == (b.type == rebar)) return;
+    const std::size_t m = a.type == rebar ? j : i;
+    if (moved[m] || ov <= o.tol * std::min(a.r, b.r)) return;
+    worst_kept = std::max(worst_kept, ov / rmin);
+    if (!kept[m]) ++kept_count;
+    kept[m] = 1;
+  });
+
+  // Every overlapping pair of the result, sorted into what it means.
+  long moved_pairs = 0, packing_pairs = 0, kept_pairs = 0;
+  double worst_moved = 0, worst_packing = 0, worst_all = 0;
+  for_each_contact(after, [&](std::size_t i, std::size_t j, double ov) {
+    const Atom &a = after.atoms[i], &b = after.atoms[j];
+    const bool ra = a.type == rebar, rb = b.type == rebar;
+    if (ra && rb) return;    // bars may be clumps of overlapping spheres
+    worst_all = std::max(worst_all, ov / rmin);
+    if (moved[i] || moved[j]) worst_moved = std::max(worst_moved, ov / rmin);
+    if (ov <= o.tol * std::min(a.r, b.r)) return;
+    if (o.kept_ok && (kept[i] || kept[j])) {
+      ++kept_pairs;
+    } else if (!moved[i] && !moved[j] && !ra && !rb) {
+      // Both unmoved matrix spheres: the packing's own overlap, if it was
+      // there before (same ids, places and radii: recomputed to be sure).
+      const Atom *pa = before.find(a.id), *pb = before.find(b.id);
+      if (before.overlap(*pa, *pb) > o.tol * std::min(a.r, b.r)) {
+        ++packing_pairs;
+        worst_packing = std::max(worst_packing, ov / rmin);
+      } else {
+        ++moved_pairs;
+      }
+    } else if (!moved[i] && !moved[j]) {
+      // an unmoved matrix sphere on a bar: a kept target, counted below
+    } else {
+      ++moved_pairs;
+    }
+  });
+
+  check(moved_pairs == 0, "moved spheres overlap nothing above tol " + num(o.tol) +
+                              " * min radius (" + str(moved_pairs) + " pairs; largest " +
+                              num(worst_moved) + " of rmin)");
+  if (o.kept_ok)
+    std::printf("INFO: %ld kept targets still overlap a bar (allowed by --kept-ok; largest %s "
+                "of rmin; %ld overlapping pairs with them ignored)\n",
+                kept_count, num(worst_kept).c_str(), kept_pairs);
+  else
+    check(kept_count == 0, "no matrix sphere overlaps a bar (" + str(kept_count) +
+                               " unmoved matrix spheres do; largest " + num(worst_kept) +
+                               " of rmin; --kept-ok allows targets left in place)");
+  std::printf("INFO: %ld overlapping pairs of unmoved matrix spheres were there before (the "
+              "packing's own, not checked; largest %s of rmin)\n",
+              packing_pairs, num(worst_packing).c_str());
+
+  // The packing given to the fix: its own matrix-matrix overlaps.
+  long before_pairs = 0;
+  double worst_before = 0;
+  for_each_contact(before, [&](std::size_t i, std::size_t j, double ov) {
+    const Atom &a = before.atoms[i], &b = before.atoms[j];
+    if (a.type == rebar || b.type == rebar) return;
+    if (ov <= o.tol * std::min(a.r, b.r)) return;
+    ++before_pairs;
+    worst_before = std::max(worst_before, ov / rmin);
+  });
+  if (!o.clean_before)
+    std::printf("INFO: the packing before has %ld matrix-matrix overlaps above tol (largest %s "
+                "of rmin; --clean-before makes them a failure)\n",
+                before_pairs, num(worst_before).c_str());
+  else
+    check(before_pairs == 0, "the packing before has no matrix-matrix overlap above tol (" +
+                                 str(before_pairs) + " pairs; largest " + num(worst_before) +
+                                 " of rmin)");
+
+  long out_of_range = 0, outside = 0;
+  for (std::size_t i = 0; i < after.atoms.size(); ++i) {
+    const Atom &a = after.atoms[i];
+    if (!moved[i] || a.type == rebar) continue;
+    if (a.r < o.rmin * (1 - 1e-12) || a.r > o.rmax * (1 + 1e-12)) ++out_of_range;
+    for (int k = 0; k < 3; ++k)
+      if (after.fixed[k] &&
+          (a.x[k] - a.r < after.lo[k] - o.tol * a.r || a.x[k] + a.r > after.hi[k] + o.tol * a.r)) {
+        ++outside;
+        break;
+      }
+  }
+  check(out_of_range == 0, "moved radii in [" + num(o.rmin) + ", " + num(o.rmax) + "]" +
+                               (given_range ? "" : " (the matrix range before)") + " (" +
+                               str(out_of_range) + " outside)");
+  check(outside == 0,
+        "moved spheres wholly inside the walls (ff dimensions) (" + str(outside) + " reach out)");
+
+  long rebar_changed = 0, rebar_missing = 0, rebar_new = 0;
+  for (const Atom &b : before.atoms) {
+    if (b.type != rebar) continue;
+    const Atom *a = after.find(b.id);
+    if (!a || a->type != rebar)
+      ++rebar_missing;
+    else if (!same_place(after, b, *a))
+      ++rebar_changed;
+  }
+  for (const Atom &a : after.atoms) {
+    const Atom *b = before.find(a.id);
+    if (a.type == rebar && (!b || b->type != rebar)) ++rebar_new;
+  }
+  check(rebar_missing == 0 && rebar_changed == 0 && rebar_new == 0,
+        "rebar untouched (" + str(rebar_missing) + " missing, " + str(rebar_changed) + " moved, " +
+            str(rebar_new) + " new)");
+  check(new_atoms == 0 && retyped == 0,
+        "no new or retyped atoms (" + str(new_atoms) + " new, " + str(retyped) + " retyped)");
+  const long nb = static_cast<long>(before.atoms.size()),
+             na = static_cast<long>(after.atoms.size());
+  if (o.deleted >= 0)
+    check(nb == na + o.deleted && deleted == o.deleted,
+          "atoms before = after + deleted (" + str(nb) + " = " + str(na) + " + " + str(o.deleted) +
+              " expected; " + str(deleted) + " ids gone)");
+  else
+    check(nb == na + deleted, "atoms before = after + deleted (" + str(nb) + " = " + str(na) +
+                                  " + " + str(deleted) + ")");
+  std::printf("SUMMARY atoms_before %ld atoms_after %ld moved %ld deleted %ld kept %ld "
+              "max_overlap_moved %.3g max_overlap_all %.3g max_overlap_packing %.3g "
+              "(overlaps / rmin %.6g)\n",
+              nb, na, moved_count, deleted, kept_count, worst_moved, worst_all, worst_packing,
+              rmin);
+  return failures ? 1 : 0;
+}
+
 }    // namespace
 
 int main(int argc, char **argv)
 {
-  std::string before_path, after_path, same_a, same_b, stats_path;
-  int rebar_type = 2;
-  double tol = 1e-6, rmin = 0, rmax = 0;
-  long expect_deleted = -1;
-  bool kept_ok = false;
+  Options o;
   for (int i = 1; i < argc; ++i) {
     const std::string k = argv[i];
     auto next = [&]() -> std::string {
@@ -209,141 +535,49 @@ int main(int argc, char **argv)
       return argv[++i];
     };
     if (k == "--before")
-      before_path = next();
+      o.before = next();
     else if (k == "--after")
-      after_path = next();
+      o.after = next();
     else if (k == "--rebar-type")
-      rebar_type = std::atoi(next().c_str());
+      o.rebar_type = static_cast<int>(to_long(next(), k));
     else if (k == "--tol")
-      tol = std::atof(next().c_str());
+      o.tol = to_double(next(), k);
     else if (k == "--rmin")
-      rmin = std::atof(next().c_str());
+      o.rmin = to_double(next(), k);
     else if (k == "--rmax")
-      rmax = std::atof(next().c_str());
+      o.rmax = to_double(next(), k);
     else if (k == "--deleted")
-      expect_deleted = std::atol(next().c_str());
+      o.deleted = to_long(next(), k);
     else if (k == "--kept-ok")
-      kept_ok = true;
+      o.kept_ok = true;
+    else if (k == "--overlap-ok-before")
+      o.clean_before = false;    // the default, accepted to say it explicitly
+    else if (k == "--clean-before")
+      o.clean_before = true;
     else if (k == "--same") {
-      same_a = next();
-      same_b = next();
+      o.same_a = next();
+      o.same_b = next();
     } else if (k == "--stats")
-      stats_path = next();
-    else
-      bad("unknown option " + k);
+      o.stats = next();
+    else if (k == "--packing")
+      o.packing = next();
+    else if (k == "-h" || k == "--help") {
+      std::printf("usage: check_scene --before B --after A [--rebar-type 2] [--tol 1e-6]\n"
+                  "                   [--rmin R --rmax R] [--deleted N] [--kept-ok]\n"
+                  "                   [--overlap-ok-before | --clean-before]\n"
+                  "       check_scene --same A B\n"
+                  "       check_scene --stats D | --packing D [--rebar-type 2] [--rmin R]\n"
+                  "see tests/tools/README.md\n");
+      return 0;
+    } else
+      bad("unknown option " + k + " (--help lists them)");
   }
-
-  if (!same_a.empty()) {
-    const Dump a = read_dump(same_a), b = read_dump(same_b);
-    bool same = a.atoms.size() == b.atoms.size();
-    for (std::size_t i = 0; same && i < a.atoms.size(); ++i)
-      same = a.atoms[i].text == b.atoms[i].text;
-    check(same, "identical atoms in " + same_a + " and " + same_b);
-    return failures ? 1 : 0;
-  }
-
-  if (!stats_path.empty()) {
-    const Dump d = read_dump(stats_path);
-    double mr = 0, mm = 0, smallest = INFINITY;
-    long nm = 0;
-    for (const Atom &a : d.atoms) {
-      if (a.type != rebar_type) {
-        smallest = std::min(smallest, a.r);
-        ++nm;
-      }
-    }
-    if (rmin <= 0) rmin = smallest;
-    for_each_contact(d, [&](int i, int j, double o) {
-      const bool ri = d.atoms[i].type == rebar_type, rj = d.atoms[j].type == rebar_type;
-      if (ri && rj) return;
-      (ri || rj ? mr : mm) = std::max(ri || rj ? mr : mm, o / rmin);
-    });
-    std::printf("atoms %zu matrix %ld max_matrix_rebar %.6g max_matrix_matrix %.6g\n",
-                d.atoms.size(), nm, mr, mm);
-    return 0;
-  }
-
-  if (before_path.empty() || after_path.empty())
-    bad("need --before and --after (or --same, --stats)");
-  const Dump before = read_dump(before_path), after = read_dump(after_path);
-
-  // Which atoms moved (or changed radius); new or retyped atoms.
-  std::vector<bool> moved(after.atoms.size(), false);
-  long new_atoms = 0, retyped = 0, moved_count = 0;
-  for (std::size_t i = 0; i < after.atoms.size(); ++i) {
-    const Atom &a = after.atoms[i];
-    const Atom *b = find(before, a.id);
-    if (!b) {
-      ++new_atoms;
-      moved[i] = true;
-      continue;
-    }
-    if (b->type != a.type) ++retyped;
-    moved[i] = b->r != a.r || b->x[0] != a.x[0] || b->x[1] != a.x[1] || b->x[2] != a.x[2];
-    moved_count += moved[i];
-  }
-  const long deleted =
-      static_cast<long>(before.atoms.size()) - static_cast<long>(after.atoms.size()) + new_atoms;
-
-  double worst_moved = 0, worst_matrix_rebar = 0, worst_untouched = 0;
-  long moved_overlaps = 0, matrix_rebar_overlaps = 0;
-  for_each_contact(after, [&](int i, int j, double o) {
-    const Atom &a = after.atoms[i], &b = after.atoms[j];
-    const double rel = o / std::min(a.r, b.r);
-    const bool ra = a.type == rebar_type, rb = b.type == rebar_type;
-    if (ra && rb) return;    // bars may be clumps of overlapping spheres
-    if (moved[i] || moved[j]) {
-      worst_moved = std::max(worst_moved, rel);
-      if (rel > tol) ++moved_overlaps;
-    } else if (ra || rb) {
-      worst_matrix_rebar = std::max(worst_matrix_rebar, rel);
-      if (rel > tol) ++matrix_rebar_overlaps;
-    } else {
-      worst_untouched = std::max(worst_untouched, rel);    // the packing's own
-    }
-  });
-  check(moved_overlaps == 0, "moved spheres overlap nothing above tol (" +
-                                 std::to_string(moved_overlaps) + " pairs; largest " +
-                                 num(worst_moved) + " of min radius)");
-  if (kept_ok)
-    std::printf("INFO: %ld matrix-rebar overlaps left (kept targets allowed)\n",
-                matrix_rebar_overlaps);
-  else
-    check(matrix_rebar_overlaps == 0, "no matrix sphere overlaps a bar (" +
-                                          std::to_string(matrix_rebar_overlaps) +
-                                          " pairs; largest " + num(worst_matrix_rebar) + ")");
-
-  if (rmax > 0) {
-    long out_of_range = 0;
-    for (std::size_t i = 0; i < after.atoms.size(); ++i)
-      if (moved[i] && after.atoms[i].type != rebar_type &&
-          (after.atoms[i].r < rmin * (1 - 1e-12) || after.atoms[i].r > rmax * (1 + 1e-12)))
-        ++out_of_range;
-    check(out_of_range == 0, "moved radii in [" + num(rmin) + ", " + num(rmax) + "] (" +
-                                 std::to_string(out_of_range) + " outside)");
-  }
-
-  long rebar_changed = 0, rebar_missing = 0;
-  for (const Atom &b : before.atoms) {
-    if (b.type != rebar_type) continue;
-    const Atom *a = find(after, b.id);
-    if (!a)
-      ++rebar_missing;
-    else if (a->r != b.r || a->x[0] != b.x[0] || a->x[1] != b.x[1] || a->x[2] != b.x[2])
-      ++rebar_changed;
-  }
-  check(rebar_missing == 0 && rebar_changed == 0, "rebar untouched (" +
-                                                      std::to_string(rebar_missing) + " missing, " +
-                                                      std::to_string(rebar_changed) + " moved)");
-  check(new_atoms == 0 && retyped == 0, "no new or retyped atoms (" + std::to_string(new_atoms) +
-                                            " new, " + std::to_string(retyped) + " retyped)");
-  if (expect_deleted >= 0)
-    check(deleted == expect_deleted,
-          "atoms before = after + deleted (" + std::to_string(before.atoms.size()) + " = " +
-              std::to_string(after.atoms.size()) + " + " + std::to_string(expect_deleted) + ")");
-  std::printf(
-      "SUMMARY atoms_before %zu atoms_after %zu moved %ld deleted %ld max_overlap_moved %.3g "
-      "max_overlap_packing %.3g\n",
-      before.atoms.size(), after.atoms.size(), moved_count, deleted, worst_moved, worst_untouched);
-  return failures ? 1 : 0;
+  if (!(o.tol >= 0)) bad("--tol must be >= 0");
+  if (o.rmin > 0 && o.rmax > 0 && o.rmin > o.rmax) bad("--rmin is larger than --rmax");
+  if (!o.same_a.empty()) return run_same(o);
+  if (!o.stats.empty()) return run_stats(o, false);
+  if (!o.packing.empty()) return run_stats(o, true);
+  if (o.before.empty() || o.after.empty())
+    bad("need --before and --after (or --same, --stats, --packing)");
+  return run_check(o);
 }

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# N > 0 in LIGGGHTS: four invocations (setup, steps 20, 40, 60; the setup of
+# the last run 0 is not one), the second bar's targets relocated by the
+# periodic invocation at step 40, no matrix sphere left on a bar.
+#   every.sh BUILD_DIR NPROCS
+set -euo pipefail
+build=$1 np=$2
+here=$(cd "$(dirname "$0")" && pwd)
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+work=$(mktemp -d "${TMPDIR:-/tmp}/liggghts_every.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+"$build/tests/make_scene" "$work/scene.data" --box 0 0.4 0 0.2 0 0.2 --radius 0.004 0.008 --fcc \
+  --bar 0.01 0.07 0.1 0.39 0.07 0.1 0.005 0.0075
+(cd "$here" && mpirun -np "$np" "$build/src/liggghts/liggghts_reinforce" -in in.every \
+   -var data "$work/scene.data" -var out "$work" -log "$work/log" -screen none) ||
+  { echo "FAIL: liggghts_reinforce exited non-zero"; tail -5 "$work/log"; exit 1; }
+grep -q '^EVERY done' "$work/log" || { echo "FAIL: the input did not finish"; exit 1; }
+grep '^fix reinforce/invert: [0-9]' "$work/log"
+invocations=$(grep -c '^fix reinforce/invert: [0-9]' "$work/log")
+[ "$invocations" -eq 4 ] || { echo "FAIL: $invocations invocations, expected 4"; exit 1; }
+first=$(grep '^fix reinforce/invert: [0-9]' "$work/log" | sed -n 1p | awk '{print $3}')
+later=$(grep '^fix reinforce/invert: [0-9]' "$work/log" | sed -n 3p | awk '{print $3}')
+[ "$first" -gt 0 ] || { echo "FAIL: no targets at the first invocation"; exit 1; }
+[ "$later" -gt 0 ] || { echo "FAIL: the second bar's targets were not relocated at step 40"; exit 1; }
+read -r _ _ _ _ _ matrix_rebar _ _ < <("$build/tests/check_scene" --stats "$work/after.dump" --rmin 0.004)
+echo "largest matrix-bar overlap at the end: $matrix_rebar rmin"
+awk -v o="$matrix_rebar" 'BEGIN {exit !(o <= 1e-6)}' || { echo "FAIL: a matrix sphere overlaps a bar"; exit 1; }
+echo "PASS: relocation every N steps"

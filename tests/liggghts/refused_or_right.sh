@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# A communication set-up under which the fix could miss ghost neighbours
+# (communicate multi, communicate group): the run must either stop with one
+# ERROR line from fix reinforce/invert, or write a correct result (check_scene).
+# Never a silent overlap.
+#   refused_or_right.sh NAME NP BUILD_DIR -- MAKE_SCENE_ARGS -- LIGGGHTS_VARS -- CHECK_SCENE_ARGS
+set -uo pipefail
+name=$1 np=$2 build=$3
+shift 3
+[ "$1" = "--" ] && shift
+make=()
+while [ "$1" != "--" ]; do make+=("$1"); shift; done
+shift
+vars=()
+while [ $# -gt 0 ] && [ "$1" != "--" ]; do vars+=("$1"); shift; done
+[ $# -gt 0 ] && shift
+check_args=("$@")
+here=$(cd "$(dirname "$0")" && pwd)
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+work=$(mktemp -d "${TMPDIR:-/tmp}/liggghts_${name}.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+"$build/tests/make_scene" "$work/scene.data" "${make[@]}" || { echo "FAIL: make_scene"; exit 1; }
+(cd "$here" && timeout 120 mpirun -np "$np" "$build/src/liggghts/liggghts_reinforce" -in in.scene \
+   -var data "$work/scene.data" -var out "$work" -log "$work/log" -screen none "${vars[@]}") \
+  >"$work/stdout" 2>&1
+status=$?
+[ "$status" -ne 124 ] || { echo "FAIL: the run hung"; exit 1; }
+if [ "$status" -ne 0 ]; then
+  errors=$(grep -c '^ERROR' "$work/log" || true)
+  line=$(grep '^ERROR' "$work/log" | head -1)
+  echo "exit $status: $line"
+  [ "$errors" -eq 1 ] || { echo "FAIL: $errors ERROR lines, expected one"; exit 1; }
+  grep -q 'reinforce/invert' <<<"$line" || { echo "FAIL: the run stopped, but not by the fix"; exit 1; }
+  echo "PASS $name np=$np: refused"
+  exit 0
+fi
+grep '^fix reinforce/invert: [0-9]' "$work/log"
+"$build/tests/check_scene" --before "$work/before.dump" --after "$work/after.dump" "${check_args[@]}" ||
+  { echo "FAIL: $name np=$np: the fix ran and wrote a wrong result"; exit 1; }
+echo "PASS $name np=$np: relocated correctly"

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# A set-up the fix may refuse or must get right (e.g. ghost atoms only of
+# one group: neighbours the fix cannot see). Runs tests/lammps/in.scene on a
+# make_scene scene once; passes when LAMMPS stops with exactly one ERROR
+# line matching REFUSAL (an extended regular expression) and writes no
+# after.dump, or when it runs and the checker passes on what it wrote. A
+# run that completes with a wrong result fails.
+#   refused_or_right.sh NAME NP BUILD_DIR REFUSAL -- MAKE_SCENE_ARGS -- LMP_VARS -- CHECK_ARGS
+set -uo pipefail
+name=$1 np=$2 build=$3 refusal=$4
+shift 4
+[ "$1" = "--" ] && shift
+make=()
+while [ "$1" != "--" ]; do make+=("$1"); shift; done
+shift
+vars=()
+while [ $# -gt 0 ] && [ "$1" != "--" ]; do vars+=("$1"); shift; done
+[ $# -gt 0 ] && shift
+here=$(cd "$(dirname "$0")" && pwd)
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+work=$(mktemp -d "${TMPDIR:-/tmp}/refused_${name}.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+"$build/tests/make_scene" "$work/scene.data" "${make[@]}" || exit 2
+launch=(mpirun -np "$np")
+[ "$np" -eq 1 ] && launch=()
+(cd "$here/../lammps" && timeout 120 "${launch[@]}" "$build/src/lammps/lmp_reinforce" -in in.scene \
+   -var data "$work/scene.data" -var out "$work" -log "$work/log" -screen none "${vars[@]}") >/dev/null 2>&1
+status=$?
+grep '^fix reinforce/invert: [0-9]' "$work/log" | head -1
+if [ "$status" -ne 0 ]; then
+  errors=$(grep -c '^ERROR' "$work/log" || true)
+  line=$(grep '^ERROR' "$work/log" | head -1)
+  echo "exit $status: $line"
+  [ "$status" -ne 124 ] || { echo "FAIL: $name np=$np: the run hung"; exit 1; }
+  [ "$errors" -eq 1 ] || { echo "FAIL: $name np=$np: $errors ERROR lines"; exit 1; }
+  grep -Eq -- "$refusal" <<<"$line" || { echo "FAIL: $name np=$np: the ERROR line does not say: $refusal"; exit 1; }
+  [ ! -s "$work/after.dump" ] || ! grep -q '^ITEM:' "$work/after.dump" \
+    || { echo "FAIL: $name np=$np: refused after writing a result"; exit 1; }
+  echo "PASS $name np=$np: refused"
+  exit 0
+fi
+deleted=$(awk '/^TOTALS/ {print $4}' "$work/log" | tail -1)
+"$build/tests/check_scene" --before "$work/before.dump" --after "$work/after.dump" --deleted "${deleted:-0}" "$@" \
+  || { echo "FAIL: $name np=$np: the fix ran and wrote a wrong result"; exit 1; }
+echo "PASS $name np=$np: right"

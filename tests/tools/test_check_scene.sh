@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# The checker's own tests: every check passes a good scene and fails a bad
+# one, for the right reason (the exact FAIL line) and with exit status 1.
+#
+#   tests/tools/test_check_scene.sh [path/to/check_scene]
+#
+# Without an argument it compiles check_scene.cpp with g++ into a temporary
+# directory. The scenes are the small hand-made dumps in testdata/ (box
+# 0..10, rebar type 2, matrix radii 0.5 and 1; README.md describes each).
+set -uo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+td=$here/testdata
+if [ $# -ge 1 ]; then
+  check=$1
+else
+  tmp=$(mktemp -d)
+  trap 'rm -rf "$tmp"' EXIT
+  g++ -std=c++17 -O2 -Wall -Wextra -o "$tmp/check_scene" "$here/check_scene.cpp" || exit 1
+  check=$tmp/check_scene
+fi
+
+failed=0 cases=0
+# expect STATUS PATTERN -- ARGS...: runs the checker, which must exit with
+# STATUS and print a line matching PATTERN (grep -E).
+expect() {
+  local status=$1 pattern=$2
+  shift 3
+  cases=$((cases + 1))
+  local out rc
+  out=$("$check" "$@" 2>&1)
+  rc=$?
+  if [ "$rc" -ne "$status" ] || ! grep -Eq -- "$pattern" <<<"$out"; then
+    failed=$((failed + 1))
+    echo "not ok: check_scene $* (exit $rc, wanted $status and /$pattern/)"
+    sed 's/^/    /' <<<"$out"
+  else
+    echo "ok: check_scene ${*//$td\//} -> $(grep -E -m1 -- "$pattern" <<<"$out")"
+  fi
+}
+B=(--before "$td/before.dump")
+
+# overlap of a moved sphere
+expect 0 '^PASS: moved spheres overlap nothing' -- "${B[@]}" --after "$td/after_ok.dump" --deleted 0
+expect 1 '^FAIL: moved spheres overlap nothing.*\(1 pairs' -- "${B[@]}" --after "$td/after_overlap.dump"
+# ... across a periodic boundary (x is pp)
+expect 0 '^PASS: moved spheres overlap nothing' -- --before "$td/before_periodic.dump" --after "$td/after_periodic_ok.dump"
+expect 1 '^FAIL: moved spheres overlap nothing.*\(1 pairs' -- --before "$td/before_periodic.dump" --after "$td/after_periodic.dump"
+# the packing's own overlaps: ignored where both spheres stay (by default,
+# or said with --overlap-ok-before); --clean-before fails them
+expect 0 '^INFO: 1 overlapping pairs of unmoved matrix spheres' -- --before "$td/before_packing.dump" --after "$td/after_packing_ok.dump"
+expect 0 '^INFO: the packing before has 1 matrix-matrix overlaps above tol' -- --before "$td/before_packing.dump" --after "$td/after_packing_ok.dump" --overlap-ok-before
+expect 1 '^FAIL: the packing before has no matrix-matrix overlap above tol \(1 pairs' -- --before "$td/before_packing.dump" --after "$td/after_packing_ok.dump" --clean-before
+expect 0 '^PASS: the packing before has no matrix-matrix overlap above tol \(0 pairs' -- "${B[@]}" --after "$td/after_ok.dump" --clean-before
+expect 1 '^FAIL: moved spheres overlap nothing.*\(1 pairs' -- --before "$td/before_packing.dump" --after "$td/after_packing_overlap.dump"
+# a target left on the bar
+expect 1 '^FAIL: no matrix sphere overlaps a bar \(1 unmoved' -- "${B[@]}" --after "$td/after_kept.dump"
+expect 0 '^INFO: 1 kept targets still overlap a bar' -- "${B[@]}" --after "$td/after_kept.dump" --kept-ok
+expect 0 '^INFO: 1 kept targets.*2 overlapping pairs with them ignored' -- "${B[@]}" --after "$td/after_kept_neighbour.dump" --kept-ok
+expect 1 '^FAIL: moved spheres overlap nothing' -- "${B[@]}" --after "$td/after_kept_neighbour.dump"
+# radius range: given, or the matrix range before by default
+expect 0 '^PASS: moved radii in \[0.5, 1\] \(0 outside' -- "${B[@]}" --after "$td/after_ok.dump" --rmin 0.5 --rmax 1
+expect 0 '^PASS: moved radii in \[0.5, 1\] \(the matrix range before\)' -- "${B[@]}" --after "$td/after_ok.dump"
+expect 1 '^FAIL: moved radii in \[0.5, 1\] \(1 outside' -- "${B[@]}" --after "$td/after_radius.dump" --rmin 0.5 --rmax 1
+expect 1 '^FAIL: moved radii in \[0.5, 0.8\] \(1 outside' -- "${B[@]}" --after "$td/after_ok.dump" --rmin 0.5 --rmax 0.8
+# walls (ff dimensions)
+expect 0 '^PASS: moved spheres wholly inside the walls' -- "${B[@]}" --after "$td/after_ok.dump"
+expect 1 '^FAIL: moved spheres wholly inside the walls.*\(1 reach out' -- "${B[@]}" --after "$td/after_outside.dump"
+# rebar untouched
+expect 0 '^PASS: rebar untouched' -- "${B[@]}" --after "$td/after_ok.dump"
+expect 1 '^FAIL: rebar untouched \(0 missing, 1 moved' -- "${B[@]}" --after "$td/after_rebar_moved.dump"
+expect 1 '^FAIL: rebar untouched \(1 missing' -- "${B[@]}" --after "$td/after_rebar_deleted.dump"
+expect 1 "^FAIL: rebar untouched \(0 missing, 1 moved, 1 new" -- "${B[@]}" --after "$td/after_new.dump" --rebar-type 1
+# conservation of atoms
+expect 0 '^PASS: atoms before = after \+ deleted \(4 = 3 \+ 1' -- "${B[@]}" --after "$td/after_deleted.dump" --deleted 1
+expect 0 '^SUMMARY atoms_before 4 atoms_after 3 moved 0 deleted 1' -- "${B[@]}" --after "$td/after_deleted.dump"
+expect 1 '^FAIL: atoms before = after \+ deleted \(4 = 3 \+ 0 expected' -- "${B[@]}" --after "$td/after_deleted.dump" --deleted 0
+expect 1 '^FAIL: atoms before = after \+ deleted \(4 = 4 \+ 1 expected' -- "${B[@]}" --after "$td/after_ok.dump" --deleted 1
+expect 1 '^FAIL: no new or retyped atoms \(1 new' -- "${B[@]}" --after "$td/after_new.dump"
+# several snapshots: the last counts
+expect 0 '^SUMMARY atoms_before 4 atoms_after 4 moved 1 deleted 0' -- "${B[@]}" --after "$td/after_multi.dump"
+# --same: identical text of id type x y z radius, any order of lines or columns
+expect 0 '^PASS: identical atoms' -- --same "$td/after_ok.dump" "$td/after_ok_shuffled.dump"
+expect 0 '^PASS: identical atoms' -- --same "$td/after_ok.dump" "$td/after_multi.dump"
+expect 1 "^FAIL: identical atoms.*first difference: '2 1 5 7 5 1' vs '2 1 5 6.5 5 1'" -- --same "$td/after_ok.dump" "$td/after_overlap.dump"
+expect 1 '^FAIL: identical atoms.*4 vs 3 atoms' -- --same "$td/after_ok.dump" "$td/after_deleted.dump"
+# --stats (one line, parsed by bench/run.sh) and --packing
+expect 0 '^atoms 4 matrix 3 max_matrix_rebar 1 max_matrix_matrix 0$' -- --stats "$td/before.dump" --rmin 0.5
+expect 0 '^largest overlap / rmin: matrix-matrix 0.2, matrix-rebar 1' -- --packing "$td/before_packing.dump"
+# bad usage and unreadable input: exit status 2
+expect 2 'unknown option --frobnicate' -- --frobnicate
+expect 2 'cannot read' -- --before "$td/no_such.dump" --after "$td/after_ok.dump"
+expect 2 'need --before and --after' -- --before "$td/before.dump"
+
+echo "$((cases - failed)) of $cases cases passed"
+[ "$failed" -eq 0 ]
