@@ -15,6 +15,9 @@
 //   check_scene --packing D [--rebar-type T] [--rmin R]
 //       describes a packing (counts, radii, solid fraction, overlaps, wall
 //       penetration), no test
+//   check_scene --compare-grid D
+//       the cell grid finds exactly the contacts brute force finds
+//   --brute (any mode): find pairs by trying every pair, not the grid
 //
 // Overlap of spheres i, j: d = r_i + r_j - |x_i - x_j| (minimum image in
 // periodic dimensions, "pp" in the BOX BOUNDS line); a pair overlaps when
@@ -38,6 +41,7 @@ struct Atom {
   int type = 0;
   double x[3] = {0, 0, 0};
   double r = 0;
+  double mass = NAN;    // when the dump has a mass column
   std::string text;    // id, type, x, y, z and radius as written, for --same
 };
 
@@ -46,6 +50,7 @@ struct Dump {
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
   bool periodic[3] = {false, false, false};
   bool fixed[3] = {false, false, false};    // "ff": a wall at each face
+  bool has_mass = false;
   std::vector<Atom> atoms;                  // sorted by id
   std::unordered_map<long, std::size_t> index;
 
@@ -146,6 +151,8 @@ Dump read_dump(const std::string &path)
       if (!col.count(need)) bad(path + ": dump lacks column " + need);
     const std::size_t cid = col["id"], ctype = col["type"], cx = col["x"], cy = col["y"],
                       cz = col["z"], cr = col["radius"];
+    d.has_mass = col.count("mass") > 0;
+    const std::size_t cm = d.has_mass ? col["mass"] : 0;
     d.atoms.reserve(static_cast<std::size_t>(std::max(0L, n)));
     for (long a = 0; a < n; ++a) {
       const std::vector<std::string> f = split(next_line("an atom line"));
@@ -161,6 +168,7 @@ Dump read_dump(const std::string &path)
       at.x[2] = to_double(f[cz], where);
       at.r = to_double(f[cr], where);
       if (!(at.r > 0)) bad(where + ": radius must be positive");
+      if (d.has_mass) at.mass = to_double(f[cm], where);
       at.text = f[cid] + ' ' + f[ctype] + ' ' + f[cx] + ' ' + f[cy] + ' ' + f[cz] + ' ' + f[cr];
       d.atoms.push_back(std::move(at));
     }
@@ -176,13 +184,29 @@ Dump read_dump(const std::string &path)
   return last;
 }
 
+// How pairs are found: the cell grid (default), or every pair (--brute).
+// grid_scale multiplies the cell size: it is a knob for the checker's own
+// test (--compare-grid must fail when cells are too small to hold every
+// contact), never for use.
+bool brute_force = false;
+double grid_scale = 1.0;
+
 // Calls f(i, j, overlap) once for every pair i < j closer than r_i + r_j
 // (overlap > 0), minimum image in periodic dimensions, through a cell grid
-// of cell size >= 2 * the largest radius.
+// of cell size >= 2 * the largest radius (or, with --brute, by trying every
+// pair).
 template <class F> void for_each_contact(const Dump &d, F &&f)
 {
   const std::vector<Atom> &a = d.atoms;
   if (a.empty()) return;
+  if (brute_force) {
+    for (std::size_t i = 0; i < a.size(); ++i)
+      for (std::size_t j = i + 1; j < a.size(); ++j) {
+        const double o = d.overlap(a[i], a[j]);
+        if (o > 0) f(i, j, o);
+      }
+    return;
+  }
   double rmax = 0, lo[3], hi[3];
   for (int k = 0; k < 3; ++k) lo[k] = hi[k] = a[0].x[k];
   for (const Atom &at : a) {
@@ -192,7 +216,7 @@ template <class F> void for_each_contact(const Dump &d, F &&f)
       hi[k] = std::max(hi[k], at.x[k]);
     }
   }
-  double cell = 2 * rmax;
+  double cell = 2 * rmax * grid_scale;
   long n[3];
   double origin[3], size[3];
   for (;;) {
@@ -282,7 +306,7 @@ bool same_place(const Dump &box, const Atom &a, const Atom &b)
 }
 
 struct Options {
-  std::string before, after, same_a, same_b, stats, packing;
+  std::string before, after, same_a, same_b, stats, packing, compare;
   int rebar_type = 2;
   double tol = 1e-6, rmin = 0, rmax = 0;
   long deleted = -1;
@@ -355,6 +379,61 @@ int run_stats(const Options &o, bool describe)
   return 0;
 }
 
+// --compare-grid D: every contact (overlap > 0) of D found by the cell
+// grid must be found by brute force and the other way round, with the same
+// overlap.
+int run_compare(const Options &o)
+{
+  const Dump d = read_dump(o.compare);
+  struct Pair {
+    std::size_t i, j;
+    double ov;
+  };
+  auto collect = [&](bool brute) {
+    brute_force = brute;
+    std::vector<Pair> p;
+    for_each_contact(d, [&](std::size_t i, std::size_t j, double ov) { p.push_back({i, j, ov}); });
+    std::sort(p.begin(), p.end(),
+              [](const Pair &a, const Pair &b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
+    return p;
+  };
+  const std::vector<Pair> grid = collect(false), all = collect(true);
+  long missing = 0, extra = 0, differ = 0, twice = 0;
+  std::string first;
+  std::size_t g = 0, b = 0;
+  auto note = [&](const char *what, const Pair &p) {
+    if (first.empty())
+      first = std::string(what) + " ids " + str(d.atoms[p.i].id) + " " + str(d.atoms[p.j].id) +
+              " overlap " + num(p.ov);
+  };
+  for (std::size_t k = 1; k < grid.size(); ++k)
+    if (grid[k].i == grid[k - 1].i && grid[k].j == grid[k - 1].j) ++twice;
+  while (g < grid.size() || b < all.size()) {
+    if (b == all.size() || (g < grid.size() && (grid[g].i < all[b].i ||
+                                                (grid[g].i == all[b].i && grid[g].j < all[b].j)))) {
+      ++extra;
+      note("grid only:", grid[g++]);
+    } else if (g == grid.size() || grid[g].i != all[b].i || grid[g].j != all[b].j) {
+      ++missing;
+      note("missed by the grid:", all[b++]);
+    } else {
+      if (grid[g].ov != all[b].ov) {
+        ++differ;
+        note("different overlap:", all[b]);
+      }
+      ++g;
+      ++b;
+    }
+  }
+  check(missing == 0 && extra == 0 && differ == 0 && twice == 0,
+        "the grid finds the " + str(static_cast<long>(all.size())) +
+            " contacts brute force finds, in " + str(static_cast<long>(d.atoms.size())) +
+            " spheres (" + str(missing) + " missed, " + str(extra) + " extra, " + str(twice) +
+            " twice, " + str(differ) + " with another overlap" +
+            (first.empty() ? "" : "; first: " + first) + ")");
+  return failures ? 1 : 0;
+}
+
 int run_check(Options o)
 {
   const Dump before = read_dump(o.before), after = read_dump(o.after);
@@ -409,13 +488,16 @@ int run_check(Options o)
 
   // Every overlapping pair of the result, sorted into what it means.
   long moved_pairs = 0, packing_pairs = 0, kept_pairs = 0;
-  double worst_moved = 0, worst_packing = 0, worst_all = 0;
+  double worst_moved = 0, worst_packing = 0, worst_all = 0, worst_moved_kept = 0;
   for_each_contact(after, [&](std::size_t i, std::size_t j, double ov) {
     const Atom &a = after.atoms[i], &b = after.atoms[j];
     const bool ra = a.type == rebar, rb = b.type == rebar;
     if (ra && rb) return;    // bars may be clumps of overlapping spheres
     worst_all = std::max(worst_all, ov / rmin);
     if (moved[i] || moved[j]) worst_moved = std::max(worst_moved, ov / rmin);
+    // A moved sphere on a kept target (unplaced keep): reported on its own.
+    if ((moved[i] && kept[j]) || (moved[j] && kept[i]))
+      worst_moved_kept = std::max(worst_moved_kept, ov / rmin);
     if (ov <= o.tol * std::min(a.r, b.r)) return;
     if (o.kept_ok && (kept[i] || kept[j])) {
       ++kept_pairs;
@@ -439,10 +521,14 @@ int run_check(Options o)
   check(moved_pairs == 0, "moved spheres overlap nothing above tol " + num(o.tol) +
                               " * min radius (" + str(moved_pairs) + " pairs; largest " +
                               num(worst_moved) + " of rmin)");
-  if (o.kept_ok)
+  if (o.kept_ok) {
     std::printf("INFO: %ld kept targets still overlap a bar (allowed by --kept-ok; largest %s "
                 "of rmin; %ld overlapping pairs with them ignored)\n",
                 kept_count, num(worst_kept).c_str(), kept_pairs);
+    std::printf("INFO: largest overlap of a moved sphere with a kept target: %s of rmin "
+                "(max_overlap_kept)\n",
+                num(worst_moved_kept).c_str());
+  }
   else
     check(kept_count == 0, "no matrix sphere overlaps a bar (" + str(kept_count) +
                                " unmoved matrix spheres do; largest " + num(worst_kept) +
@@ -515,11 +601,32 @@ int run_check(Options o)
   else
     check(nb == na + deleted, "atoms before = after + deleted (" + str(nb) + " = " + str(na) +
                                   " + " + str(deleted) + ")");
+  // Moved spheres keep their material density: mass / r^3 as before (when
+  // both dumps have a mass column).
+  if (before.has_mass && after.has_mass) {
+    long weighed = 0, changed = 0;
+    double worst_density = 0;
+    for (std::size_t i = 0; i < after.atoms.size(); ++i) {
+      const Atom &a = after.atoms[i];
+      const Atom *b = before.find(a.id);
+      if (!moved[i] || !b || a.type == rebar) continue;
+      const double da = a.mass / (a.r * a.r * a.r), db = b->mass / (b->r * b->r * b->r);
+      const double rel = std::fabs(da - db) / std::max(std::fabs(da), std::fabs(db));
+      ++weighed;
+      if (!(rel <= 1e-12)) ++changed;    // NaN (mass 0 / 0) counts as changed
+      if (rel > worst_density || std::isnan(rel)) worst_density = rel;
+    }
+    check(changed == 0, "moved spheres kept their density (mass / volume) (" + str(changed) +
+                            " of " + str(weighed) + " changed; largest relative change " +
+                            num(worst_density) + ")");
+  } else {
+    std::printf("INFO: no mass column in both dumps: density not checked\n");
+  }
   std::printf("SUMMARY atoms_before %ld atoms_after %ld moved %ld deleted %ld kept %ld "
               "max_overlap_moved %.3g max_overlap_all %.3g max_overlap_packing %.3g "
-              "(overlaps / rmin %.6g)\n",
+              "max_overlap_kept %.3g (overlaps / rmin %.6g)\n",
               nb, na, moved_count, deleted, kept_count, worst_moved, worst_all, worst_packing,
-              rmin);
+              worst_moved_kept, rmin);
   return failures ? 1 : 0;
 }
 
@@ -561,12 +668,20 @@ int main(int argc, char **argv)
       o.stats = next();
     else if (k == "--packing")
       o.packing = next();
+    else if (k == "--compare-grid")
+      o.compare = next();
+    else if (k == "--brute")
+      brute_force = true;
+    else if (k == "--grid-scale")
+      grid_scale = to_double(next(), k);
     else if (k == "-h" || k == "--help") {
       std::printf("usage: check_scene --before B --after A [--rebar-type 2] [--tol 1e-6]\n"
                   "                   [--rmin R --rmax R] [--deleted N] [--kept-ok]\n"
                   "                   [--overlap-ok-before | --clean-before]\n"
                   "       check_scene --same A B\n"
                   "       check_scene --stats D | --packing D [--rebar-type 2] [--rmin R]\n"
+                  "       check_scene --compare-grid D    (grid search against brute force)\n"
+                  "       --brute: find pairs by trying every pair (any mode)\n"
                   "see tests/tools/README.md\n");
       return 0;
     } else
@@ -574,7 +689,9 @@ int main(int argc, char **argv)
   }
   if (!(o.tol >= 0)) bad("--tol must be >= 0");
   if (o.rmin > 0 && o.rmax > 0 && o.rmin > o.rmax) bad("--rmin is larger than --rmax");
+  if (!(grid_scale > 0)) bad("--grid-scale must be > 0");
   if (!o.same_a.empty()) return run_same(o);
+  if (!o.compare.empty()) return run_compare(o);
   if (!o.stats.empty()) return run_stats(o, false);
   if (!o.packing.empty()) return run_stats(o, true);
   if (o.before.empty() || o.after.empty())

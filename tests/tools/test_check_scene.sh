@@ -14,7 +14,6 @@ if [ $# -ge 1 ]; then
   check=$1
 else
   tmp=$(mktemp -d)
-  trap 'rm -rf "$tmp"' EXIT
   g++ -std=c++17 -O2 -Wall -Wextra -o "$tmp/check_scene" "$here/check_scene.cpp" || exit 1
   check=$tmp/check_scene
 fi
@@ -57,11 +56,20 @@ expect 1 '^FAIL: no matrix sphere overlaps a bar \(1 unmoved' -- "${B[@]}" --aft
 expect 0 '^INFO: 1 kept targets still overlap a bar' -- "${B[@]}" --after "$td/after_kept.dump" --kept-ok
 expect 0 '^INFO: 1 kept targets.*2 overlapping pairs with them ignored' -- "${B[@]}" --after "$td/after_kept_neighbour.dump" --kept-ok
 expect 1 '^FAIL: moved spheres overlap nothing' -- "${B[@]}" --after "$td/after_kept_neighbour.dump"
+# the overlap of a moved sphere with a kept target, as a figure (0.2 / rmin 0.5)
+expect 0 '^SUMMARY .* kept 1 .*max_overlap_kept 0.4 ' -- "${B[@]}" --after "$td/after_kept_neighbour.dump" --kept-ok
+expect 0 '^SUMMARY .* kept 1 .*max_overlap_kept 0 ' -- "${B[@]}" --after "$td/after_kept.dump" --kept-ok
+# two moved spheres overlapping each other (0.1 = 0.2 rmin), nothing else
+expect 1 '^FAIL: moved spheres overlap nothing.*\(1 pairs; largest 0.2 of rmin' -- "${B[@]}" --after "$td/after_two_moved_overlap.dump"
+expect 1 '^FAIL: moved spheres overlap nothing.*\(1 pairs; largest 0.2 of rmin' -- "${B[@]}" --after "$td/after_two_moved_overlap.dump" --brute
 # radius range: given, or the matrix range before by default
 expect 0 '^PASS: moved radii in \[0.5, 1\] \(0 outside' -- "${B[@]}" --after "$td/after_ok.dump" --rmin 0.5 --rmax 1
 expect 0 '^PASS: moved radii in \[0.5, 1\] \(the matrix range before\)' -- "${B[@]}" --after "$td/after_ok.dump"
 expect 1 '^FAIL: moved radii in \[0.5, 1\] \(1 outside' -- "${B[@]}" --after "$td/after_radius.dump" --rmin 0.5 --rmax 1
 expect 1 '^FAIL: moved radii in \[0.5, 0.8\] \(1 outside' -- "${B[@]}" --after "$td/after_ok.dump" --rmin 0.5 --rmax 0.8
+# density (mass / volume) of moved spheres: radius 1 -> 0.8 with mass 1 -> 0.512, or mass unchanged
+expect 0 '^PASS: moved spheres kept their density \(mass / volume\) \(0 of 1 changed' -- "${B[@]}" --after "$td/after_mass_ok.dump"
+expect 1 '^FAIL: moved spheres kept their density \(mass / volume\) \(1 of 1 changed' -- "${B[@]}" --after "$td/after_mass_wrong.dump"
 # walls (ff dimensions)
 expect 0 '^PASS: moved spheres wholly inside the walls' -- "${B[@]}" --after "$td/after_ok.dump"
 expect 1 '^FAIL: moved spheres wholly inside the walls.*\(1 reach out' -- "${B[@]}" --after "$td/after_outside.dump"
@@ -86,6 +94,58 @@ expect 1 '^FAIL: identical atoms.*4 vs 3 atoms' -- --same "$td/after_ok.dump" "$
 # --stats (one line, parsed by bench/run.sh) and --packing
 expect 0 '^atoms 4 matrix 3 max_matrix_rebar 1 max_matrix_matrix 0$' -- --stats "$td/before.dump" --rmin 0.5
 expect 0 '^largest overlap / rmin: matrix-matrix 0.2, matrix-rebar 1' -- --packing "$td/before_packing.dump"
+# The cell grid against brute force on random scenes of thousands of
+# spheres (polydisperse, overlapping, walls and periodic dimensions, a box
+# only two cells wide, a sparse scene whose cells are enlarged, atoms just
+# outside a periodic box): the same contacts, the same overlaps. With cells
+# too small (--grid-scale 0.4) the comparison must fail.
+# random_dump FILE SEED N FLAGS LX LY LZ RLO RHI NBIG RBIG
+random_dump() {
+  awk -v seed="$2" -v n="$3" -v flags="$4" -v lx="$5" -v ly="$6" -v lz="$7" \
+      -v rlo="$8" -v rhi="$9" -v nbig="${10}" -v rbig="${11}" 'BEGIN {
+    srand(seed); split(flags, f, " "); len[1] = lx; len[2] = ly; len[3] = lz
+    total = n + nbig + 8
+    printf "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n%d\nITEM: BOX BOUNDS %s\n", total, flags
+    printf "0 %s\n0 %s\n0 %s\nITEM: ATOMS id type x y z radius\n", lx, ly, lz
+    for (i = 1; i <= n + nbig; i++)
+      printf "%d %d %.17g %.17g %.17g %.17g\n", i, 1 + (i % 5 == 0), rand() * lx, rand() * ly, rand() * lz,
+             (i > n ? rbig : rlo + (rhi - rlo) * rand())
+    # planted contacts: a pair across each face (periodic: through it), and
+    # atoms a little outside the box
+    id = n + nbig
+    for (k = 1; k <= 3; k++) {
+      for (m = 1; m <= 3; m++) p[m] = len[m] / 2
+      p[k] = 0.01 * rhi; q = len[k] - 0.01 * rhi
+      printf "%d 1 %.17g %.17g %.17g %.17g\n", ++id, p[1], p[2], p[3], rhi
+      p[k] = f[k] == "pp" ? q : p[k] + rhi
+      printf "%d 1 %.17g %.17g %.17g %.17g\n", ++id, p[1], p[2], p[3], rhi
+    }
+    printf "%d 1 %.17g %.17g %.17g %.17g\n", ++id, lx + 0.001 * rhi, ly / 3, lz / 3, rhi
+    printf "%d 1 %.17g %.17g %.17g %.17g\n", ++id, -0.001 * rhi, ly / 3, lz / 3, rhi
+  }' >"$1"
+}
+rnd=$(mktemp -d)
+trap 'rm -rf "$rnd" ${tmp:+"$tmp"}' EXIT
+random_dump "$rnd/walls.dump" 1 5000 "ff ff ff" 6 6 6 0.05 0.3 0 0
+random_dump "$rnd/periodic.dump" 2 5000 "pp pp pp" 6 6 6 0.05 0.3 20 1.0
+random_dump "$rnd/two_cells.dump" 3 3000 "pp ff pp" 2.5 8 6 0.1 0.5 0 0
+random_dump "$rnd/sparse.dump" 4 2000 "pp ff ff" 1000 1000 1000 0.01 0.05 0 0
+random_dump "$rnd/wide_radii.dump" 5 4000 "ff pp ff" 8 8 8 0.01 0.2 30 2.0
+for scene in walls periodic two_cells sparse wide_radii; do
+  expect 0 "^PASS: the grid finds the [1-9][0-9]* contacts brute force finds.*\(0 missed, 0 extra, 0 twice, 0 with" \
+    -- --compare-grid "$rnd/$scene.dump"
+done
+expect 1 '^FAIL: the grid finds the [0-9]+ contacts brute force finds.*\([1-9][0-9]* missed' \
+  -- --compare-grid "$rnd/walls.dump" --grid-scale 0.4
+expect 1 '^FAIL: the grid finds the [0-9]+ contacts brute force finds.*\([1-9][0-9]* missed' \
+  -- --compare-grid "$rnd/periodic.dump" --grid-scale 0.4
+# the full check by brute force gives what the grid gives
+cmp <("$check" --before "$rnd/walls.dump" --after "$rnd/periodic.dump" 2>&1) \
+    <("$check" --before "$rnd/walls.dump" --after "$rnd/periodic.dump" --brute 2>&1) >/dev/null &&
+  echo "ok: the full check, grid and --brute: the same output" ||
+  { failed=$((failed + 1)); echo "not ok: the full check differs with --brute"; }
+cases=$((cases + 1))
+
 # bad usage and unreadable input: exit status 2
 expect 2 'unknown option --frobnicate' -- --frobnicate
 expect 2 'cannot read' -- --before "$td/no_such.dump" --after "$td/after_ok.dump"
