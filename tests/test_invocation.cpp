@@ -19,7 +19,8 @@ public:
   std::vector<std::array<double, 3>> pos;
   std::vector<double *> rows;
   std::vector<double> radius, mass;
-  std::vector<int> tag, mask, pending;
+  std::vector<std::int64_t> tag;
+  std::vector<int> mask, pending;
   std::vector<std::string> logged;
   int refreshes = 0;
   double cutoff_asked = 0;
@@ -29,7 +30,7 @@ public:
     pos.push_back({x.x, x.y, x.z});
     radius.push_back(r);
     mass.push_back(r * r * r);
-    tag.push_back(static_cast<int>(tag.size()) + 1);
+    tag.push_back(static_cast<std::int64_t>(tag.size()) + 1);
     mask.push_back(m);
     pending.push_back(0);
   }
@@ -42,7 +43,7 @@ public:
     a.nlocal = a.nall = static_cast<int>(pos.size());
     a.x = rows.data();
     a.radius = radius.data();
-    a.tag = tag.data();
+    a.tag = tag;
     a.mask = mask.data();
     a.pending = pending.data();
     a.group_bit = kGroup;
@@ -83,6 +84,7 @@ public:
   }
   double sum(double v) override { return v; }
   double max(double v) override { return v; }
+  std::vector<double> gather_all(const std::vector<double> &mine) override { return mine; }
   double wall_time() override { return 0; }
   void log(const std::string &line) override { logged.push_back(line); }
   void fail(const std::string &message) override { throw std::runtime_error(message); }

@@ -7,6 +7,7 @@
 #include "relocation.h"
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -17,7 +18,7 @@ struct AtomArrays {
   int nlocal = 0, nall = 0;
   double **x = nullptr;
   const double *radius = nullptr;
-  const int *tag = nullptr;
+  std::vector<std::int64_t> tag;    // atom IDs, copied (hosts have 32- or 64-bit IDs)
   const int *mask = nullptr;
   const int *pending = nullptr;    // the fix's per-atom flag: 1 = target waiting for a place
   int group_bit = 0, rebar_bit = 0;
@@ -55,6 +56,24 @@ public:
   // Global reductions over all processes.
   virtual double sum(double v) = 0;
   virtual double max(double v) = 0;
+  // Every process's values, concatenated in rank order (collective).
+  virtual std::vector<double> gather_all(const std::vector<double> &mine) = 0;
+
+  // Optional: the host's own neighbour lists. build_neighbour_lists returns
+  // false when the host has none (the engine then uses its own grid), true
+  // when it built a full list, ghosts included, covering `cutoff`; then
+  // neighbours(local) gives the local indices (owned or ghost) of every atom
+  // within `cutoff` of owned atom `local`.
+  virtual bool build_neighbour_lists(double cutoff)
+  {
+    (void)cutoff;
+    return false;
+  }
+  virtual void neighbours(int local, std::vector<int> &out)
+  {
+    (void)local;
+    out.clear();
+  }
   virtual double wall_time() = 0;
   virtual void log(const std::string &line) = 0;
   virtual void fail(const std::string &message) = 0;    // does not return

@@ -16,6 +16,7 @@
 #include "update.h"
 
 #include "invocation.h"
+#include "mpi_gather.h"
 
 #include <fmt/format.h>
 
@@ -23,14 +24,10 @@
 #include <cmath>
 #include <limits>
 #include <string>
-#include <type_traits>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
-// The engine's view takes atom IDs as int (LAMMPS_SMALLBIG, Debian's build).
-static_assert(std::is_same<tagint, int>::value,
-              "fix reinforce/invert expects 32-bit atom IDs (LAMMPS_SMALLBIG)");
 
 namespace {
 
@@ -112,7 +109,7 @@ public:
     a.nall = atom->nlocal + atom->nghost;
     a.x = atom->x;
     a.radius = atom->radius;
-    a.tag = atom->tag;
+    a.tag.assign(atom->tag, atom->tag + a.nall);
     a.mask = atom->mask;
     a.pending = f.pending.data();
     a.group_bit = f.groupbit;
@@ -228,6 +225,11 @@ public:
     double out = 0;
     MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_MAX, f.world);
     return out;
+  }
+
+  std::vector<double> gather_all(const std::vector<double> &mine) override
+  {
+    return reinforce::mpi_gather_all(mine, f.world);
   }
 
   double wall_time() override { return MPI_Wtime(); }

@@ -10,6 +10,8 @@
 #include "region.h"
 #include "update.h"
 
+#include "mpi_gather.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -193,7 +195,7 @@ reinforce::AtomArrays FixReinforceInvert::atoms()
   a.nall = atom->nlocal + atom->nghost;
   a.x = atom->x;
   a.radius = atom->radius;
-  a.tag = atom->tag;
+  a.tag.assign(atom->tag, atom->tag + a.nall);
   a.mask = atom->mask;
   a.pending = pending_;
   a.group_bit = groupbit;
@@ -304,6 +306,11 @@ double FixReinforceInvert::sum(double v)
   double out;
   MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_SUM, world);
   return out;
+}
+
+std::vector<double> FixReinforceInvert::gather_all(const std::vector<double> &mine)
+{
+  return reinforce::mpi_gather_all(mine, world);
 }
 
 double FixReinforceInvert::max(double v)

@@ -51,6 +51,7 @@ private:
   void remove(std::vector<int> &locals) override;
   double sum(double v) override;
   double max(double v) override;
+  std::vector<double> gather_all(const std::vector<double> &mine) override;
   double wall_time() override;
   void log(const std::string &line) override;
   void fail(const std::string &message) override;
