@@ -8,57 +8,150 @@
 #  3. a clang build of the libFuzzer targets, each run for a fixed number of
 #     executions.
 # REINFORCE_QUICK=1 runs only the first.
+#
+# It stops with a non-zero status when the install or the build fails (no
+# test is run on binaries left from before), and fails when a host (LAMMPS,
+# LIGGGHTS) was not built or registered no test, unless it is left out on
+# purpose, by name: REINFORCE_SKIP=liggghts (or lammps; also sanitizer, fuzz:
+# parts), or -DREINFORCE_LIGGGHTS=OFF in REINFORCE_CMAKE_ARGS or in the build
+# directory's CMake cache. The end lists the tests run per part and names
+# every part skipped; the closing line, read by CI, is
+#   total: N passed, M failed
 set -uo pipefail
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-source "$top/scripts/setup.sh" || exit 1
+# setup.sh runs as its own process: sourced after `||`, bash would ignore its
+# `set -e`, and its options would leak into this script.
+if ! bash "$top/scripts/setup.sh"; then
+  echo "test: FAILED: setup (package install, configure or build) failed: no test was run"
+  echo "total: 0 passed, 1 failed"
+  exit 1
+fi
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export OMPI_MCA_rmaps_base_oversubscribe=1
+export REINFORCE_BUILD="${REINFORCE_BUILD_DIR:-$top/build}"
 jobs=${REINFORCE_TEST_JOBS:-2}
 passed=0 failed=0
+parts=()       # one line per part run: "name: N tests, P passed, F failed (groups)"
+skipped=()     # one line per part or host left out, with the reason
 
-run_ctest() {    # run_ctest BUILD_DIR [ctest args]
-  local dir=$1 out
+# skip_reason NAME: prints why NAME (a host, or a part: sanitizer, fuzz) is
+# left out on purpose, or nothing.
+skip_reason() {
+  local h=$1 H v
+  H=$(tr '[:lower:]' '[:upper:]' <<<"$h")
+  if [[ ",${REINFORCE_SKIP:-}," =~ [,[:space:]]$h[,[:space:]] ]]; then
+    echo "REINFORCE_SKIP=${REINFORCE_SKIP}"
+  elif [ "$h" != lammps ] && [ "$h" != liggghts ]; then
+    return 0    # a part: only REINFORCE_SKIP leaves it out
+  elif [[ " ${REINFORCE_CMAKE_ARGS:-} " =~ [[:space:]]-DREINFORCE_${H}(:BOOL)?=(OFF|0|NO|FALSE|off|no|false)[[:space:]] ]]; then
+    echo "-DREINFORCE_${H}=OFF in REINFORCE_CMAKE_ARGS"
+  elif [ -f "$REINFORCE_BUILD/CMakeCache.txt" ] &&
+       v=$(sed -n "s/^REINFORCE_${H}:BOOL=//p" "$REINFORCE_BUILD/CMakeCache.txt") &&
+       [[ "$v" =~ ^(OFF|0|NO|FALSE|off|no|false)$ ]]; then
+    echo "REINFORCE_${H}=OFF in $REINFORCE_BUILD/CMakeCache.txt"
+  fi
+}
+
+run_ctest() {    # run_ctest BUILD_DIR [ctest args]; the part's name: $part (default: the directory's)
+  local dir=$1 out name=${part:-$(basename "$1")}
   shift
   out=$(mktemp)
   (cd "$dir" && ctest --output-on-failure -j"$jobs" "$@") 2>&1 | tee "$out"
-  local line
+  local line total=0 fails=1
   line=$(grep -E '^[0-9]+% tests passed, [0-9]+ tests failed out of [0-9]+' "$out" | tail -1)
-  if [ -z "$line" ]; then
-    failed=$((failed + 1))
-  else
-    local total fails
+  if [ -n "$line" ]; then
     fails=$(sed -E 's/.* ([0-9]+) tests failed out of ([0-9]+).*/\1/' <<<"$line")
     total=$(sed -E 's/.* tests failed out of ([0-9]+).*/\1/' <<<"$line")
-    passed=$((passed + total - fails))
-    failed=$((failed + fails))
   fi
+  passed=$((passed + total - fails))
+  failed=$((failed + fails))
+  # Tests run per group (the name's prefix; unit tests are Suite.Name).
+  local groups
+  groups=$(sed -nE 's/^ *[0-9]+\/[0-9]+ Test +#[0-9]+: ([^ ]+) .*/\1/p' "$out" |
+           sed -E 's/^[A-Za-z0-9]+\..*/unit/; s/^(check_scene|lammps|liggghts|stability|fuzz)_.*/\1/' |
+           sort | uniq -c | awk '{printf "%s%s %d", (NR > 1 ? ", " : ""), $2, $1}')
+  parts+=("$name: $total tests, $((total - fails)) passed, $fails failed${groups:+ ($groups)}")
+  [ -n "$line" ] || parts+=("$name: FAILED: ctest reported no result (no test found?)")
   rm -f "$out"
 }
 
-echo "== main build: all tests"
-run_ctest "$REINFORCE_BUILD" "$@"
+# Every host expected (not skipped by name) must be built and have tests.
+host_exe=(lammps src/lammps/lmp_reinforce liggghts src/liggghts/liggghts_reinforce)
+exclude=()
+for ((k = 0; k < ${#host_exe[@]}; k += 2)); do
+  h=${host_exe[k]} exe=$REINFORCE_BUILD/${host_exe[k + 1]}
+  why=$(skip_reason "$h")
+  if [ -n "$why" ]; then
+    skipped+=("$h tests (skipped on purpose: $why)")
+    exclude+=("^${h}_")
+    continue
+  fi
+  n=$( (cd "$REINFORCE_BUILD" && ctest -N -R "^${h}_") 2>/dev/null | sed -nE 's/^Total Tests: ([0-9]+)/\1/p')
+  if [ ! -x "$exe" ] || [ "${n:-0}" -eq 0 ]; then
+    echo "test: FAILED: host $h expected but $( [ -x "$exe" ] && echo "no ${h}_ test is registered" ||
+          echo "$exe was not built (not found at configure time?)"). Install it, or skip it by name:" \
+         "REINFORCE_SKIP=$h"
+    parts+=("$h: FAILED: host missing, its tests did not run")
+    failed=$((failed + 1))
+  fi
+done
 
-if [ "${REINFORCE_QUICK:-0}" != 1 ]; then
+echo "== main build: all tests"
+exclude_re=$(IFS='|'; echo "${exclude[*]}")
+part=main run_ctest "$REINFORCE_BUILD" ${exclude_re:+-E "$exclude_re"} "$@"
+
+if [ "${REINFORCE_QUICK:-0}" = 1 ]; then
+  skipped+=("sanitizer (REINFORCE_QUICK=1)" "fuzz (REINFORCE_QUICK=1)")
+fi
+if [ "${REINFORCE_QUICK:-0}" != 1 ] && why=$(skip_reason sanitizer) && [ -n "$why" ]; then
+  skipped+=("sanitizer (skipped on purpose: $why)")
+elif [ "${REINFORCE_QUICK:-0}" != 1 ]; then
   echo "== sanitizer build (ASan + UBSan): core tests and MPI scenes"
   san="$top/build-sanitize"
+  san_args=(-DREINFORCE_LIGGGHTS=OFF) san_targets=(core_tests make_scene check_scene)
+  san_tests="^Kernel|^Engine|^Fix|^Rounds|^Summary|^Invocation|^stability_periodic_2x2x1_np4$|^stability_stiff"
+  if [ -n "$(skip_reason lammps)" ]; then
+    san_args+=(-DREINFORCE_LAMMPS=OFF) san_tests="^Kernel|^Engine|^Fix|^Rounds|^Summary|^Invocation"
+    skipped+=("sanitizer: LAMMPS scenes (lammps skipped)")
+  else
+    san_targets+=(lmp_reinforce)
+  fi
   if cmake -S "$top" -B "$san" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DREINFORCE_SANITIZE=ON \
-       -DREINFORCE_LIGGGHTS=OFF >/dev/null &&
-     cmake --build "$san" -j"$(nproc)" --target core_tests lmp_reinforce make_scene check_scene; then
+       "${san_args[@]}" >/dev/null &&
+     cmake --build "$san" -j"${REINFORCE_BUILD_JOBS:-$(nproc)}" --target "${san_targets[@]}"; then
     # Open MPI's own allocations are not ours to judge: no leak check.
     ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
-      run_ctest "$san" -R "${REINFORCE_SANITIZE_TESTS:-^Kernel|^Engine|^Fix|^Rounds|^Summary|^Invocation|^stability_periodic_2x2x1_np4$|^stability_stiff}"
+      part=sanitizer run_ctest "$san" -R "${REINFORCE_SANITIZE_TESTS:-$san_tests}"
   else
-    echo "sanitizer build failed"; failed=$((failed + 1))
+    echo "sanitizer build failed"; failed=$((failed + 1)); parts+=("sanitizer: FAILED: build failed")
   fi
+fi
 
+if [ "${REINFORCE_QUICK:-0}" != 1 ] && why=$(skip_reason fuzz) && [ -n "$why" ]; then
+  skipped+=("fuzz (skipped on purpose: $why)")
+elif [ "${REINFORCE_QUICK:-0}" != 1 ]; then
   echo "== fuzz build (clang, libFuzzer)"
   fuzz="$top/build-fuzz"
   if CC=clang CXX=clang++ cmake -S "$top" -B "$fuzz" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
        -DREINFORCE_FUZZ=ON -DREINFORCE_TESTS=OFF -DREINFORCE_LAMMPS=OFF -DREINFORCE_LIGGGHTS=OFF \
-       >/dev/null && cmake --build "$fuzz" -j"$(nproc)"; then
-    run_ctest "$fuzz"
+       >/dev/null && cmake --build "$fuzz" -j"${REINFORCE_BUILD_JOBS:-$(nproc)}"; then
+    part=fuzz run_ctest "$fuzz"
   else
-    echo "fuzz build failed"; failed=$((failed + 1))
+    echo "fuzz build failed"; failed=$((failed + 1)); parts+=("fuzz: FAILED: build failed")
   fi
 fi
 
-echo "total: $passed passed, $failed failed"
+# Per part: tests run, and what was skipped (printed just above the total).
+summary() {
+  echo "== tests run per part"
+  local p
+  for p in "${parts[@]}"; do echo "  $p"; done
+  if [ ${#skipped[@]} -eq 0 ]; then
+    echo "  skipped: nothing"
+  else
+    for p in "${skipped[@]}"; do echo "  skipped: $p"; done
+  fi
+}
+
+summary; echo "total: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -1,0 +1,146 @@
+#!/usr/bin/env bash
+# The test command's own test (scripts/test.sh and scripts/setup.sh), run in
+# scratch copies so that nothing of the real build is touched; a few
+# seconds. Each case runs the test command and asserts its exit status and
+# the lines it must print:
+#  * a failed package install (apt-get faked to fail), a failed configure, a
+#    failed build (the real core with an #error): non-zero, "setup: FAILED",
+#    no test run, and the closing total line;
+#  * a missing host (a fake project that builds lmp_reinforce but not
+#    liggghts_reinforce): non-zero, the host named; skipped by name
+#    (REINFORCE_SKIP=liggghts, or -DREINFORCE_LIGGGHTS=OFF): zero, the skip
+#    named, the host's tests not run;
+#  * a failing test: counted (the command goes on to the end: per-part
+#    counts, "total: N passed, M failed"), non-zero.
+#   test_command_test.sh
+set -uo pipefail
+top=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+# The caller's settings (an outer test command) must not leak in.
+unset "${!REINFORCE_@}"
+w=$(mktemp -d "${TMPDIR:-/tmp}/test_command.XXXXXX")
+trap 'rm -rf "$w"' EXIT
+failed=0 cases=0
+
+# Fake package tools: every package installed (bin_ok), or none, with
+# apt-get install failing (bin_broken_apt). sudo runs the command.
+mkdir -p "$w/bin_ok" "$w/bin_broken_apt"
+printf '#!/bin/sh\nexit 0\n' >"$w/bin_ok/dpkg"
+printf '#!/bin/sh\nexit 1\n' >"$w/bin_broken_apt/dpkg"
+printf '#!/bin/sh\n[ "$1" = update ] && exit 0\necho "E: Unable to locate package (fake)" >&2\nexit 100\n' \
+  >"$w/bin_broken_apt/apt-get"
+for d in bin_ok bin_broken_apt; do printf '#!/bin/sh\nexec "$@"\n' >"$w/$d/sudo"; done
+chmod +x "$w"/bin_*/*
+
+# A fake project: lmp_reinforce and a passing lammps_ test always; with
+# -DFAKE_LIGGGHTS=ON also liggghts_reinforce and a liggghts_ test (failing
+# with -DFAKE_LIGGGHTS_FAILS=ON); -DFAKE_BROKEN=ON: the configure fails.
+fake=$w/fake
+mkdir -p "$fake/scripts"
+cp "$top/scripts/setup.sh" "$top/scripts/test.sh" "$fake/scripts/"
+cat >"$fake/CMakeLists.txt" <<'EOF'
+cmake_minimum_required(VERSION 3.16)
+project(fake NONE)
+option(REINFORCE_LAMMPS "" ON)
+option(REINFORCE_LIGGGHTS "" ON)
+option(FAKE_LIGGGHTS "" OFF)
+option(FAKE_LIGGGHTS_FAILS "" OFF)
+option(FAKE_BROKEN "" OFF)
+if(FAKE_BROKEN)
+  message(FATAL_ERROR "deliberately broken configure")
+endif()
+enable_testing()
+function(fake_exe path)
+  file(WRITE ${CMAKE_BINARY_DIR}/${path} "#!/bin/sh\n")
+  file(CHMOD ${CMAKE_BINARY_DIR}/${path} PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
+endfunction()
+fake_exe(src/lammps/lmp_reinforce)
+add_test(NAME lammps_fake COMMAND true)
+add_test(NAME Unit.Fake COMMAND true)
+if(REINFORCE_LIGGGHTS AND FAKE_LIGGGHTS)
+  fake_exe(src/liggghts/liggghts_reinforce)
+  if(FAKE_LIGGGHTS_FAILS)
+    add_test(NAME liggghts_fake COMMAND false)
+  else()
+    add_test(NAME liggghts_fake COMMAND true)
+  endif()
+endif()
+EOF
+
+# The real core, deliberately broken: the first source file does not compile.
+real=$w/real
+mkdir -p "$real/src"
+cp -r "$top/CMakeLists.txt" "$top/scripts" "$top/bench" "$real/"
+cp -r "$top/src/core" "$real/src/"
+first=$(sed -n 's|^ *\(src/core/[a-z_]*\.cpp\)$|\1|p; s|^add_library(reinforce_core STATIC *\(src/core/[a-z_]*\.cpp\).*|\1|p' \
+        "$real/CMakeLists.txt" | head -1)
+[ -n "$first" ] || first=src/core/tangent_sphere.cpp
+sed -i '1i #error deliberately broken by tests/scripts/test_command_test.sh' "$real/$first"
+
+# expect NAME STATUS(0|nonzero) DIR BIN [VAR=value ...] -- PATTERN... [-- !PATTERN...]
+# Runs DIR/scripts/test.sh with PATH=BIN:$PATH and the variables; each
+# PATTERN (grep -E) must match a line of its output, each !PATTERN none.
+expect() {
+  local name=$1 want=$2 dir=$3 bin=$4
+  shift 4
+  local vars=()
+  while [ "$1" != "--" ]; do vars+=("$1"); shift; done
+  shift
+  cases=$((cases + 1))
+  local out rc bad=""
+  out=$(env PATH="$w/$bin:$PATH" REINFORCE_QUICK=1 REINFORCE_BUILD_JOBS=1 \
+        REINFORCE_BUILD_DIR="$w/build_$name" "${vars[@]}" bash "$dir/scripts/test.sh" 2>&1)
+  rc=$?
+  if [ "$want" = 0 ] && [ "$rc" -ne 0 ]; then bad="exit $rc, wanted 0"; fi
+  if [ "$want" != 0 ] && [ "$rc" -eq 0 ]; then bad="exit 0, wanted non-zero"; fi
+  local p
+  for p in "$@"; do
+    if [ "${p:0:1}" = '!' ]; then
+      grep -Eq -- "${p:1}" <<<"$out" && bad+="${bad:+; }printed /${p:1}/"
+    else
+      grep -Eq -- "$p" <<<"$out" || bad+="${bad:+; }no line /$p/"
+    fi
+  done
+  [ "$(tail -1 <<<"$out" | grep -Ec '^total: [0-9]+ passed, [0-9]+ failed$')" -eq 1 ] ||
+    bad+="${bad:+; }the last line is not 'total: N passed, M failed'"
+  if [ -n "$bad" ]; then
+    failed=$((failed + 1))
+    echo "not ok: $name: $bad"
+    sed 's/^/    /' <<<"$out" | tail -40
+  else
+    echo "ok: $name (exit $rc): $(tail -1 <<<"$out")"
+  fi
+}
+
+# 1. A failed install, configure or build stops the command: no test runs.
+expect install_fails nonzero "$fake" bin_broken_apt -- \
+  '^setup: FAILED: apt-get install' '^test: FAILED: setup' '^total: 0 passed, 1 failed$' '!^== main build'
+expect configure_fails nonzero "$fake" bin_ok REINFORCE_CMAKE_ARGS=-DFAKE_BROKEN=ON -- \
+  '^setup: FAILED: cmake configure' '^total: 0 passed, 1 failed$' '!^== main build'
+expect build_fails nonzero "$real" bin_ok \
+  "REINFORCE_CMAKE_ARGS=-DREINFORCE_LAMMPS=OFF -DREINFORCE_LIGGGHTS=OFF -DREINFORCE_TESTS=OFF" -- \
+  'deliberately broken' '^setup: FAILED: build in' '^test: FAILED: setup' '^total: 0 passed, 1 failed$' \
+  '!^== main build'
+# 2. A missing host fails the command, unless skipped by name.
+expect host_missing nonzero "$fake" bin_ok -- \
+  '^test: FAILED: host liggghts expected but .*liggghts_reinforce was not built.*REINFORCE_SKIP=liggghts' \
+  '^  main: 2 tests, 2 passed, 0 failed \(lammps 1, unit 1\)' '^  liggghts: FAILED: host missing' \
+  '^  skipped: sanitizer \(REINFORCE_QUICK=1\)' '^total: 2 passed, 1 failed$'
+expect host_skipped_by_name 0 "$fake" bin_ok REINFORCE_SKIP=liggghts -- \
+  '^  main: 2 tests, 2 passed, 0 failed' \
+  '^  skipped: liggghts tests \(skipped on purpose: REINFORCE_SKIP=liggghts\)' '^total: 2 passed, 0 failed$'
+expect host_off_in_cmake 0 "$fake" bin_ok REINFORCE_CMAKE_ARGS=-DREINFORCE_LIGGGHTS=OFF -- \
+  '^  skipped: liggghts tests \(skipped on purpose: -DREINFORCE_LIGGGHTS=OFF' '^total: 2 passed, 0 failed$'
+expect host_present 0 "$fake" bin_ok REINFORCE_CMAKE_ARGS=-DFAKE_LIGGGHTS=ON -- \
+  '^  main: 3 tests, 3 passed, 0 failed \(lammps 1, liggghts 1, unit 1\)' '^total: 3 passed, 0 failed$' \
+  '!^  skipped: liggghts'
+# A host built but skipped by name: its tests are not run.
+expect host_built_skipped 0 "$fake" bin_ok REINFORCE_SKIP=liggghts \
+  "REINFORCE_CMAKE_ARGS=-DFAKE_LIGGGHTS=ON -DFAKE_LIGGGHTS_FAILS=ON" -- \
+  '^total: 2 passed, 0 failed$' '!liggghts_fake'
+# 3. A failing test is counted, and the command goes on to its summary.
+expect test_fails nonzero "$fake" bin_ok "REINFORCE_CMAKE_ARGS=-DFAKE_LIGGGHTS=ON -DFAKE_LIGGGHTS_FAILS=ON" -- \
+  '^  main: 3 tests, 2 passed, 1 failed' '^== tests run per part' '^total: 2 passed, 1 failed$'
+
+echo "$((cases - failed)) of $cases cases passed"
+[ "$failed" -eq 0 ] && echo "PASS: the test command stops on a failed setup and on a missing host"
+[ "$failed" -eq 0 ]
