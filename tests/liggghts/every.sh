@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # N > 0 in LIGGGHTS: four invocations (setup, steps 20, 40, 60; the setup of
 # the last run 0 is not one), the second bar's targets relocated by the
-# periodic invocation at step 40, no matrix sphere left on a bar.
+# periodic invocation at step 40, the third bar's at step 60, no matrix
+# sphere left on a bar, and every pair checked at the last invocation
+# (../scripts/last_invocation.sh: the checker on the dumps of steps 59, 60).
 #   every.sh BUILD_DIR NPROCS
 set -euo pipefail
 build=$1 np=$2
@@ -22,6 +24,9 @@ first=$(grep '^fix reinforce/invert: [0-9]' "$work/log" | sed -n 1p | awk '{prin
 later=$(grep '^fix reinforce/invert: [0-9]' "$work/log" | sed -n 3p | awk '{print $3}')
 [ "$first" -gt 0 ] || { echo "FAIL: no targets at the first invocation"; exit 1; }
 [ "$later" -gt 0 ] || { echo "FAIL: the second bar's targets were not relocated at step 40"; exit 1; }
+last=$(grep '^fix reinforce/invert: [0-9]' "$work/log" | sed -n 4p)
+"$here/../scripts/last_invocation.sh" "$build/tests/check_scene" "$work/before_last.dump" "$work/after.dump" \
+  "$last" --rmin 0.004 --rmax 0.008 || exit 1
 read -r _ _ _ _ _ matrix_rebar _ _ < <("$build/tests/check_scene" --stats "$work/after.dump" --rmin 0.004)
 echo "largest matrix-bar overlap at the end: $matrix_rebar rmin"
 awk -v o="$matrix_rebar" 'BEGIN {exit !(o <= 1e-6)}' || { echo "FAIL: a matrix sphere overlaps a bar"; exit 1; }

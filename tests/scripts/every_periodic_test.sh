@@ -3,7 +3,8 @@
 # four invocations; deletions during the run as well as at its setup; the
 # atom count LAMMPS keeps = start - every deletion the fix reported + the 40
 # spheres of the second bar = the atoms written; no matrix sphere left on a
-# bar after the last invocation.
+# bar after the last invocation, and every pair checked at it
+# (last_invocation.sh: the checker on the dumps of steps 59 and 60).
 #   every_periodic_test.sh BUILD_DIR NPROCS
 set -euo pipefail
 build=$1 np=$2
@@ -36,4 +37,6 @@ echo "atoms: start $start, deleted $deleted ($later during the runs), +40 bar sp
 read -r _ _ _ _ _ matrix_rebar _ _ < <("$build/tests/check_scene" --stats "$work/after.dump" --rmin 0.004)
 echo "largest matrix-bar overlap after the last invocation: $matrix_rebar rmin"
 awk -v o="$matrix_rebar" 'BEGIN {exit !(o <= 1e-6)}' || fail "a matrix sphere overlaps a bar"
+"$here/scripts/last_invocation.sh" "$build/tests/check_scene" "$work/before_last.dump" "$work/after.dump" \
+  "$(sed -n 4p "$work/lines")" --rmin 0.004 --rmax 0.008 || exit 1
 echo "PASS: relocation every N steps across seams and the periodic boundary"

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # The N > 0 test: four invocations (setup, steps 20, 40, 60), the second bar's
-# targets relocated by a periodic invocation, no matrix sphere left on a bar.
+# targets relocated by a periodic invocation at step 40, the third bar's at
+# step 60, no matrix sphere left on a bar, and every pair checked at the last
+# invocation (last_invocation.sh: the checker on the dumps of steps 59 and 60).
 #   every_test.sh BUILD_DIR NPROCS
 set -euo pipefail
 build=$1 np=$2
@@ -19,6 +21,9 @@ invocations=$(grep -c '^fix reinforce/invert: [0-9]' "$work/log")
 [ "$invocations" -eq 4 ] || { echo "FAIL: $invocations invocations, expected 4"; exit 1; }
 later=$(grep '^fix reinforce/invert: [0-9]' "$work/log" | sed -n 3p | awk '{print $3}')
 [ "$later" -gt 0 ] || { echo "FAIL: the second bar's targets were not relocated at step 40"; exit 1; }
+last=$(grep '^fix reinforce/invert: [0-9]' "$work/log" | sed -n 4p)
+"$here/scripts/last_invocation.sh" "$build/tests/check_scene" "$work/before_last.dump" "$work/after.dump" \
+  "$last" --rmin 0.004 --rmax 0.008 || exit 1
 read -r _ _ _ _ _ matrix_rebar _ _ < <("$build/tests/check_scene" --stats "$work/after.dump" --rmin 0.004)
 echo "largest matrix-bar overlap at the end: $matrix_rebar rmin"
 awk -v o="$matrix_rebar" 'BEGIN {exit !(o <= 1e-6)}' || { echo "FAIL: a matrix sphere overlaps a bar"; exit 1; }
