@@ -26,6 +26,11 @@
 #                                   same totals, no second summary line
 #   print "AGAIN t r d k atoms"     a fresh fix afterwards: its targets are
 #                                   exactly the kept ones
+#   print "KEPT_OVERLAP f11"        f_ID[11], the largest overlap of a
+#                                   relocated sphere with a kept target / rmin:
+#                                   no smaller than the checker's
+#                                   max_overlap_kept (printed whenever targets
+#                                   were kept)
 # and when after.dump has a c_disp[4] column (compute displace/atom defined
 # before the fix), it must equal the distance each atom moved between the
 # dumps: other fixes' per-atom data follow the atoms through the deletions.
@@ -82,6 +87,19 @@ if [ "${SCENE_KEPT_ANY:-0}" != 1 ]; then
   echo "PASS: moved = relocated ($moved), left on a bar = kept ($kept)"
 else
   echo "PASS: moved = relocated ($moved); $ckept matrix spheres left on a bar, $kept of them kept targets"
+fi
+# unplaced keep: how far relocated spheres overlap the kept targets (the
+# checker allows it with --kept-ok, and reports it), against the fix's
+# f_ID[11] when the input prints it (KEPT_OVERLAP line, -var f11 1).
+if [ "$kept" -gt 0 ]; then
+  kov=$(awk '/^SUMMARY/ {for (i = 1; i < NF; i++) if ($i == "max_overlap_kept") print $(i + 1)}' "$work/check")
+  echo "kept targets: the largest overlap of a relocated sphere with one is ${kov:-?} rmin (written)"
+  f11=$(last KEPT_OVERLAP "$log")
+  if [ -n "$f11" ]; then
+    awk -v w="$kov" -v f="${f11#KEPT_OVERLAP }" 'BEGIN {exit !(w != "" && w + 0 <= 1.01 * f + 1e-12)}' ||
+      fail "f_ID[11] = ${f11#KEPT_OVERLAP } rmin, relocated spheres written overlap kept targets by $kov rmin"
+    echo "PASS: f_ID[11] = ${f11#KEPT_OVERLAP } >= the largest overlap of a relocated sphere with a kept target written ($kov)"
+  fi
 fi
 
 # The fix's reported volumes and residual overlap against the dumps, and the
