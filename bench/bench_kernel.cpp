@@ -61,7 +61,7 @@ std::vector<Case> well_conditioned(int n, std::mt19937_64 &rng)
   return out;
 }
 
-// The stiff families of DESIGN.md section 3, in equal shares: radius ratio
+// The stiff families of docs/design.md ("The kernel"), in equal shares: radius ratio
 // 1e3 (both ways), nearly coplanar centres, clustered directions (nearly
 // collinear inverted centres), offset 1e6, radii 1e-6.
 const char *const kFamilies[6] = {
