@@ -75,6 +75,18 @@ run_ctest() {    # run_ctest BUILD_DIR [ctest args]; the part's name: $part (def
   rm -f "$out"
 }
 
+# Per part: tests run, and what was skipped (printed just above the total).
+summary() {
+  echo "== tests run per part"
+  local p
+  for p in "${parts[@]}"; do echo "  $p"; done
+  if [ ${#skipped[@]} -eq 0 ]; then
+    echo "  skipped: nothing"
+  else
+    for p in "${skipped[@]}"; do echo "  skipped: $p"; done
+  fi
+}
+
 # Every host expected (not skipped by name) must be built and have tests.
 host_exe=(lammps src/lammps/lmp_reinforce liggghts src/liggghts/liggghts_reinforce)
 exclude=()
@@ -141,17 +153,7 @@ elif [ "${REINFORCE_QUICK:-0}" != 1 ]; then
   fi
 fi
 
-# Per part: tests run, and what was skipped (printed just above the total).
-summary() {
-  echo "== tests run per part"
-  local p
-  for p in "${parts[@]}"; do echo "  $p"; done
-  if [ ${#skipped[@]} -eq 0 ]; then
-    echo "  skipped: nothing"
-  else
-    for p in "${skipped[@]}"; do echo "  skipped: $p"; done
-  fi
-}
-
+# More parts go above this line: `part=NAME run_ctest DIR [ctest args]` lists
+# NAME with its counts in the summary; a part left out: skipped+=("NAME (why)").
 summary; echo "total: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
