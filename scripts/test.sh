@@ -96,6 +96,8 @@ for ((k = 0; k < ${#host_exe[@]}; k += 2)); do
   if [ -n "$why" ]; then
     skipped+=("$h tests (skipped on purpose: $why)")
     exclude+=("^${h}_")
+    # the stability tests and the benchmark's quick case run lmp_reinforce too
+    [ "$h" = lammps ] && exclude+=("^stability_" "^bench_quick$")
     continue
   fi
   n=$( (cd "$REINFORCE_BUILD" && ctest -N -R "^${h}_") 2>/dev/null | sed -nE 's/^Total Tests: ([0-9]+)/\1/p')
