@@ -3,6 +3,14 @@
 // Note on messages: only the std::string overloads of error->all() and
 // utils::logmesg() may be called (see fmt_compat/fmt/format.h), so every
 // message is built here as a std::string.
+//
+// REINFORCE_LAMMPS_SOURCE_BUILD (fix_reinforce_invert.h) selects what the
+// host offers; each #if below says why the two builds differ there:
+//  1. atom deletion: AtomVec::copy (source-built) or an exchange that drops
+//     atoms moved out of the box (packaged: no atom_vec.h);
+//  2. the host's occasional neighbour list (source-built: neigh_request.h);
+//  3. renamed API: Comm::forward_comm(Fix *) and Domain::get_region_by_id
+//     (current LAMMPS) against forward_comm_fix and find_region (2021).
 
 #include "fix_reinforce_invert.h"
 
@@ -14,14 +22,20 @@
 #include "modify.h"
 #include "region.h"
 #include "update.h"
+#if REINFORCE_LAMMPS_SOURCE_BUILD
+#include "atom_vec.h"
+#include "neigh_list.h"
+#include "neigh_request.h"
+#include "neighbor.h"
+#endif
 
 #include "invocation.h"
 #include "mpi_gather.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <limits>
 #include <string>
 
@@ -38,8 +52,9 @@ constexpr int kPresent = 0;    // not waiting (rebar, matrix, relocated, kept)
 constexpr int kPending = 1;    // a target waiting for its new place
 constexpr int kDoomed = 2;     // no place found: to be deleted at the next refresh
 
+#if !REINFORCE_LAMMPS_SOURCE_BUILD
 // ---------------------------------------------------------------------------
-// Deletion of atoms, with LAMMPS's own code path for it.
+// [1, packaged] Deletion of atoms, with LAMMPS's own code path for it.
 //
 // delete_atoms removes an atom by AtomVec::copy() of the last owned atom into
 // its slot, which also calls copy_arrays() of every fix holding per-atom data.
@@ -60,6 +75,7 @@ void mark_doomed_atoms_for_exchange(Atom *atom, const std::vector<int> &pending)
   for (int i = 0; i < atom->nlocal; ++i)
     if (pending[i] == kDoomed) atom->x[i][0] = std::numeric_limits<double>::max();
 }
+#endif
 
 // Comm keeps bordergroup protected. A class derived from it may name the
 // member through a pointer to member; no object of this class is made.
@@ -69,7 +85,19 @@ struct CommAccess : Comm {
 
 std::string format_length(double v)
 {
-  return fmt::format("{:.6g}", v);
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+
+Region *find_region(Domain *domain, const std::string &name)
+{
+#if REINFORCE_LAMMPS_SOURCE_BUILD    // [3] current API
+  return domain->get_region_by_id(name);
+#else
+  const int iregion = domain->find_region(name);
+  return iregion < 0 ? nullptr : domain->regions[iregion];
+#endif
 }
 
 }    // namespace
@@ -83,6 +111,12 @@ std::string format_length(double v)
 class FixReinforceInvert::Host : public reinforce::HostHooks {
 public:
   explicit Host(FixReinforceInvert &fix) : f(fix) {}
+  // A raised ghost cutoff is put back on every way out of the invocation,
+  // also when an ERROR unwinds through it (LAMMPS built with exceptions, or
+  // used as a library): the host's next run must not keep the raised value.
+  ~Host() override { restore_ghost_cutoff(); }
+  Host(const Host &) = delete;
+  Host &operator=(const Host &) = delete;
 
   // The refresh LAMMPS's Monte Carlo fixes do inside pre_exchange, plus
   // comm->setup(): at setup_pre_exchange of the first run it has not been
@@ -93,7 +127,9 @@ public:
     f.domain->pbc();
     f.domain->reset_box();
     f.comm->setup();
+#if !REINFORCE_LAMMPS_SOURCE_BUILD    // [1] remove() only marked them
     mark_doomed_atoms_for_exchange(f.atom, f.pending);
+#endif
     f.comm->exchange();
     f.atom->nghost = 0;
     f.comm->borders();
@@ -122,7 +158,11 @@ public:
   void forward_pending() override
   {
     // Also with one process: periodic images are ghosts too.
+#if REINFORCE_LAMMPS_SOURCE_BUILD    // [3] current API
+    f.comm->forward_comm(&f);
+#else
     f.comm->forward_comm_fix(&f);
+#endif
   }
 
   void ensure_ghost_cutoff(double reach) override
@@ -141,10 +181,53 @@ public:
   void restore_ghost_cutoff() override
   {
     if (!raised) return;
+    raised = false;
     f.comm->cutghostuser = saved_cutghostuser;
     f.comm->setup();
-    raised = false;
+#if REINFORCE_LAMMPS_SOURCE_BUILD
+    if (binned) f.neighbor->setup_bins();    // back to the run's ghost extent
+#endif
+    binned = false;
   }
+
+#if REINFORCE_LAMMPS_SOURCE_BUILD
+  // [2] The host's occasional full list (requested in init()), over the
+  // current owned and ghost atoms: each owned atom's neighbours, ghosts
+  // included, within the list's cutoff. LAMMPS refuses an occasional list
+  // with ghost info under neighbor style bin, so the list holds owned atoms
+  // only, which is what neighbours() promises. Its cutoff was fixed when
+  // LAMMPS set up the lists (it must then lie within the ghost cutoff): a
+  // larger request is answered "no list", and the engine uses its own grid.
+  bool build_neighbour_lists(double cutoff) override
+  {
+    if (!f.list || !(cutoff <= f.neighbor->cutneighmax) ||
+        !(cutoff <= std::min({f.comm->cutghost[0], f.comm->cutghost[1], f.comm->cutghost[2]})))
+      return false;
+    f.neighbor->setup_bins();    // bins for the current ghost extent
+    binned = true;
+    f.neighbor->build_one(f.list);
+    row.assign(f.atom->nlocal, -1);
+    for (int ii = 0; ii < f.list->inum; ++ii)
+      if (f.list->ilist[ii] < f.atom->nlocal) row[f.list->ilist[ii]] = ii;
+    list_cutoff = cutoff;
+    return true;
+  }
+
+  void neighbours(int local, std::vector<int> &out) override
+  {
+    out.clear();
+    if (local < 0 || local >= static_cast<int>(row.size()) || row[local] < 0) return;
+    const int i = f.list->ilist[row[local]];
+    const int *jlist = f.list->firstneigh[i];
+    const double *xi = f.atom->x[i];
+    for (int k = 0; k < f.list->numneigh[i]; ++k) {
+      const int j = jlist[k] & NEIGHMASK;
+      const double dx = xi[0] - f.atom->x[j][0], dy = xi[1] - f.atom->x[j][1],
+                   dz = xi[2] - f.atom->x[j][2];
+      if (dx * dx + dy * dy + dz * dz <= list_cutoff * list_cutoff) out.push_back(j);
+    }
+  }
+#endif
 
   // Two processes of one round lie at least one subdomain apart, in a
   // dimension where they differ. That only happens where the dimension has
@@ -205,13 +288,29 @@ public:
     f.pending[i] = kPresent;
   }
 
-  // Only the processes of one round call this, so the atoms are only marked
-  // here; the next refresh (collective) deletes them. Until then nothing
-  // looks at them, and afterwards they are gone from every view.
+#if REINFORCE_LAMMPS_SOURCE_BUILD
+  // [1] As delete_atoms and fix evaporate do: the last owned atom moves into
+  // each hole (AtomVec::copy also carries every fix's per-atom data), highest
+  // index first, so a moved atom is never one still to be removed. Ghosts
+  // are stale until the refresh that follows every round (collective), and
+  // nothing looks at them before it.
+  void remove(std::vector<int> &locals) override
+  {
+    std::sort(locals.rbegin(), locals.rend());
+    for (int i : locals) {
+      f.atom->avec->copy(f.atom->nlocal - 1, i, 1);
+      f.atom->nlocal--;
+    }
+  }
+#else
+  // [1] Only the processes of one round call this, so the atoms are only
+  // marked here; the next refresh (collective) deletes them. Until then
+  // nothing looks at them, and afterwards they are gone from every view.
   void remove(std::vector<int> &locals) override
   {
     for (int i : locals) f.pending[i] = kDoomed;
   }
+#endif
 
   double sum(double v) override
   {
@@ -245,6 +344,9 @@ private:
   FixReinforceInvert &f;
   double saved_cutghostuser = 0;
   bool raised = false;
+  bool binned = false;    // source-built: bins set up for a raised cutoff
+  std::vector<int> row;    // source-built: list row of each owned atom
+  double list_cutoff = 0;
 };
 
 /* ---------------------------------------------------------------------- */
@@ -326,14 +428,40 @@ void FixReinforceInvert::find_groups_and_region()
   if (rebar_group == igroup)
     error->all(FLERR,
                std::string("Fix reinforce/invert rebar group must differ from the fix group"));
+  // A dynamic group is evaluated by its fix during the run's setup, after
+  // the relocation: refused rather than read half-evaluated.
+  if (group->dynamic[rebar_group])
+    error->all(FLERR, "Fix reinforce/invert rebar group '" + options.rebar_group +
+                          "' is dynamic: make it static first (group " + options.rebar_group +
+                          " static)");
   rebar_bit = group->bitmask[rebar_group];
 
   region = nullptr;
   if (!options.region.empty()) {
-    const int iregion = domain->find_region(options.region);
-    if (iregion < 0)
+    region = find_region(domain, options.region);
+    if (!region)
       error->all(FLERR, "Fix reinforce/invert region '" + options.region + "' does not exist");
-    region = domain->regions[iregion];
+  }
+}
+
+// The fix moves and deletes single spheres: a matrix atom (fix group, not
+// rebar) in the group of a rigid-body fix (rigid, rigid/small, ...) would
+// be torn out of its body. Bars may be rigid bodies. Collective.
+void FixReinforceInvert::check_rigid_bodies()
+{
+  for (int ifix = 0; ifix < modify->nfix; ++ifix) {
+    const Fix *other = modify->fix[ifix];
+    if (std::strncmp(other->style, "rigid", 5) != 0) continue;
+    int mine = 0, any = 0;
+    for (int i = 0; i < atom->nlocal && !mine; ++i)
+      mine = (atom->mask[i] & groupbit) && !(atom->mask[i] & rebar_bit) &&
+             (atom->mask[i] & other->groupbit);
+    MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+    if (any)
+      error->all(FLERR, std::string("Fix reinforce/invert cannot move atoms of rigid bodies: "
+                                    "matrix atoms belong to fix ") +
+                            other->id + " (" + other->style +
+                            "); leave the bodies out of the fix group");
   }
 }
 
@@ -341,10 +469,25 @@ void FixReinforceInvert::find_groups_and_region()
 
 void FixReinforceInvert::init()
 {
+  // N = 0 and done: nothing it could check matters any more, and nothing
+  // about it may stop a later run (its groups or region may be gone).
+  if (done()) return;
   // Styles, groups and regions may have changed since the fix was defined.
   check_styles();
   find_groups_and_region();
+#if REINFORCE_LAMMPS_SOURCE_BUILD
+  // [2] Occasional: built only inside an invocation (Host::build_neighbour_lists).
+  list = nullptr;
+  neighbor->add_request(this, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL);
+#endif
 }
+
+#if REINFORCE_LAMMPS_SOURCE_BUILD
+void FixReinforceInvert::init_list(int /*id*/, NeighList *ptr)
+{
+  list = ptr;
+}
+#endif
 
 /* ---------------------------------------------------------------------- */
 
@@ -352,7 +495,7 @@ void FixReinforceInvert::setup_pre_exchange()
 {
   // write_restart and write_data also call setup_pre_exchange (whichflag 0):
   // only a run or a minimization relocates.
-  if (update->whichflag == 0) return;
+  if (update->whichflag == 0 || done()) return;
   if (options.every > 0) next_reneighbor = (update->ntimestep / options.every + 1) * options.every;
   if (invoked) return;
   invoked = true;
@@ -373,6 +516,7 @@ void FixReinforceInvert::invoke()
   if (static_cast<int>(pending.size()) < atom->nmax) grow_arrays(atom->nmax);
   std::fill(pending.begin(), pending.end(), kPresent);
   if (region) region->prematch();
+  check_rigid_bodies();
 
   Host host(*this);
   const reinforce::Totals t = reinforce::run_invocation(host, options);

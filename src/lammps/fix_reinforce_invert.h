@@ -5,9 +5,16 @@
 //
 //   fix ID group-ID reinforce/invert N rebar-group-ID keyword value ...
 //
-// Built against the packaged library and registered at run time by
-// lmp_reinforce; the FixStyle block below also lets the two files be dropped
-// into a LAMMPS source tree.
+// One source for two builds (README, layout table):
+//  * packaged: against Debian's LAMMPS 2021 library, registered at run time
+//    by lmp_reinforce (REINFORCE_LAMMPS_SOURCE_BUILD=0);
+//  * source-built: against a current LAMMPS tree, as reinforceplugin.so
+//    (plugin/) or as the in-tree package REINFORCE (package/), with
+//    REINFORCE_LAMMPS_SOURCE_BUILD=1; the FixStyle block below registers it
+//    there. Only fix_reinforce_invert.cpp differs, in a few #if blocks.
+// The plugin's CMake sets the macro; elsewhere it is 1 exactly when the
+// headers of a source tree are on the include path (neigh_request.h, which
+// Debian's liblammps-dev does not ship).
 
 #ifdef FIX_CLASS
 // clang-format off
@@ -17,6 +24,14 @@ FixStyle(reinforce/invert,FixReinforceInvert);
 
 #ifndef LMP_FIX_REINFORCE_INVERT_H
 #define LMP_FIX_REINFORCE_INVERT_H
+
+#ifndef REINFORCE_LAMMPS_SOURCE_BUILD
+#if __has_include("neigh_request.h")
+#define REINFORCE_LAMMPS_SOURCE_BUILD 1
+#else
+#define REINFORCE_LAMMPS_SOURCE_BUILD 0
+#endif
+#endif
 
 #include "fix.h"
 
@@ -36,6 +51,9 @@ public:
   int setmask() override;
   void init() override;
   void setup_pre_exchange() override;
+#if REINFORCE_LAMMPS_SOURCE_BUILD
+  void init_list(int, class NeighList *) override;
+#endif
   void pre_exchange() override;
   double compute_vector(int) override;
 
@@ -59,10 +77,13 @@ private:
   class Region *region = nullptr;
   std::vector<int> pending;
   bool invoked = false;    // the relocation at the start of the first run is done
+  class NeighList *list = nullptr;    // source-built: the host's occasional full list
   std::array<double, reinforce::kOutputSize> totals = {};
 
+  bool done() const { return invoked && options.every <= 0; }    // N = 0, relocated once
   void check_styles();
   void find_groups_and_region();
+  void check_rigid_bodies();
   void invoke();
 };
 

@@ -5,8 +5,10 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_multisphere.h"
 #include "group.h"
 #include "memory.h"
+#include "modify.h"
 #include "region.h"
 #include "update.h"
 
@@ -15,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <string>
 
 using namespace LAMMPS_NS;
@@ -118,6 +121,13 @@ void FixReinforceInvert::invoke()
   // carry no flag yet: every flag starts clear.
   std::fill(pending_, pending_ + nmax_, 0);
   if (region_) region_->prematch();
+  check_multisphere_bodies();
+  // A raised ghost cutoff is put back on every way out, also when an error
+  // unwinds through the invocation (a host built to throw).
+  struct RestoreGhostCutoff {
+    FixReinforceInvert *fix;
+    ~RestoreGhostCutoff() { fix->restore_ghost_cutoff(); }
+  } restore{this};
   const reinforce::Totals t = reinforce::run_invocation(*this, options_);
   output_ = reinforce::output_vector(t);
   // As delete_atoms does: the global count and the atom map.
@@ -127,6 +137,26 @@ void FixReinforceInvert::invoke()
     atom->nghost = 0;
     atom->map_init();
     atom->map_set();
+  }
+}
+
+// The fix moves and deletes single spheres: a matrix sphere (fix group, not
+// rebar) that belongs to a body of fix multisphere would be torn out of it.
+// Bars may be multisphere bodies. Collective.
+void FixReinforceInvert::check_multisphere_bodies()
+{
+  for (int ifix = 0; ifix < modify->nfix; ++ifix) {
+    if (std::strncmp(modify->fix[ifix]->style, "multisphere", 11) != 0) continue;
+    const FixMultisphere *ms = static_cast<FixMultisphere *>(modify->fix[ifix]);
+    int mine = 0, any = 0;
+    for (int i = 0; i < atom->nlocal && !mine; ++i)
+      mine = (atom->mask[i] & groupbit) && !(atom->mask[i] & rebar_bit_) && ms->belongs_to(i) >= 0;
+    MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+    if (any)
+      fail(std::string("Fix reinforce/invert cannot move atoms of rigid bodies: matrix atoms belong "
+                       "to fix ") +
+           modify->fix[ifix]->id + " (" + modify->fix[ifix]->style +
+           "); leave the bodies out of the fix group");
   }
 }
 

@@ -1,5 +1,15 @@
 // LIGGGHTS adapter of fix reinforce/invert: translates the host's atoms and
 // communication into reinforce::HostHooks; the algorithm is in src/core.
+// The same two files serve both builds: liggghts_reinforce (packaged
+// LIGGGHTS, style registered by register_style.cpp) and a LIGGGHTS source
+// tree (dropin/install.sh), where LIGGGHTS's style generator reads the
+// FixStyle block below.
+#ifdef FIX_CLASS
+
+FixStyle(reinforce/invert,FixReinforceInvert)
+
+#else
+
 #ifndef REINFORCE_LIGGGHTS_FIX_REINFORCE_INVERT_H
 #define REINFORCE_LIGGGHTS_FIX_REINFORCE_INVERT_H
 
@@ -36,6 +46,7 @@ private:
   double user_cutghost_ = -1;    // >= 0 while the ghost cutoff is raised
 
   void invoke();
+  void check_multisphere_bodies();
 
   // reinforce::HostHooks
   void refresh() override;
@@ -59,4 +70,5 @@ private:
 
 }    // namespace LAMMPS_NS
 
+#endif
 #endif

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Puts fix reinforce/invert into a LAMMPS source tree as the package
+# REINFORCE, for LAMMPS's own two builds (README, "Use with your own LAMMPS"):
+#
+#   bash src/lammps/package/install.sh /path/to/lammps
+#   CMake:  cmake -S /path/to/lammps/cmake -B build -D PKG_REINFORCE=on ...
+#   make:   cd /path/to/lammps/src && make yes-reinforce && make mpi
+#
+# It copies the fix and the engine (src/core, no host headers) into
+# src/REINFORCE/, and adds REINFORCE to the package list of cmake/CMakeLists.txt
+# (with C++17, which the engine needs, when the package is on). Safe to run
+# again: it refreshes the copies and patches nothing twice.
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+top=$(cd "$here/../../.." && pwd)
+tree=${1:?usage: install.sh LAMMPS_TREE (the folder holding src/ and cmake/)}
+[ -f "$tree/src/lammps.h" ] && [ -f "$tree/cmake/CMakeLists.txt" ] ||
+  { echo "install.sh: $tree is not the top of a LAMMPS source tree (src/lammps.h, cmake/CMakeLists.txt)"; exit 1; }
+
+pkg="$tree/src/REINFORCE"
+mkdir -p "$pkg"
+cp "$top/src/lammps/fix_reinforce_invert.h" "$top/src/lammps/fix_reinforce_invert.cpp" "$pkg/"
+cp "$top"/src/core/*.h "$top"/src/core/*.cpp "$pkg/"
+cp "$here/Install.sh" "$here/README" "$pkg/"
+
+# CMake: a standard package (sources globbed from src/REINFORCE, styles
+# registered from its headers); C++17 when it is on, as LAMMPS does for KOKKOS.
+cm="$tree/cmake/CMakeLists.txt"
+if ! grep -q '^  REINFORCE$' "$cm"; then
+  sed -i 's/^set(STANDARD_PACKAGES$/&\n  REINFORCE/' "$cm"
+  grep -q '^  REINFORCE$' "$cm" || { echo "install.sh: no STANDARD_PACKAGES list in $cm"; exit 1; }
+fi
+if ! grep -q 'PKG_REINFORCE AND' "$cm"; then
+  sed -i 's/^set(CMAKE_CXX_STANDARD_REQUIRED ON)$/# fix reinforce\/invert (package REINFORCE): its engine needs C++17\nif(PKG_REINFORCE AND (CMAKE_CXX_STANDARD LESS 17))\n  set(CMAKE_CXX_STANDARD 17)\nendif()\n&/' "$cm"
+  grep -q 'PKG_REINFORCE AND' "$cm" || { echo "install.sh: no CMAKE_CXX_STANDARD_REQUIRED line in $cm"; exit 1; }
+fi
+echo "install.sh: package REINFORCE in $pkg (cmake -D PKG_REINFORCE=on, or make yes-reinforce)"

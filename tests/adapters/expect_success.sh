@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Runs an input that must finish: exit status 0, no ERROR line, the data file
+# written at its end ($out/written.data), within 120 s.
+#   expect_success.sh EXE NPROCS INPUT [-var args...]
+set -uo pipefail
+exe=$1 np=$2 input=$3
+shift 3
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+work=$(mktemp -d "${TMPDIR:-/tmp}/expect_success.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+launch=(mpirun -np "$np")
+[ "$np" -eq 1 ] && launch=()
+(cd "$(dirname "$input")" && timeout 120 "${launch[@]}" "$exe" -in "$input" -log "$work/log" \
+   -screen none -var out "$work" "$@") >"$work/stdout" 2>&1
+status=$?
+grep -E '^(ERROR|fix reinforce/invert: [0-9])' "$work/log" || true
+fail=0
+[ "$status" -eq 0 ] || { echo "FAIL: exit status $status"; tail -3 "$work/stdout"; fail=1; }
+! grep -q '^ERROR' "$work/log" || { echo "FAIL: an ERROR line"; fail=1; }
+[ -s "$work/written.data" ] || { echo "FAIL: the input did not reach its end (no written.data)"; fail=1; }
+[ "$fail" -eq 0 ] && echo "PASS: the input ran to its end"
+exit "$fail"

@@ -1,0 +1,153 @@
+# LAMMPS built from source (included from CMakeLists.txt here). Test names
+# start with src_lammps_. Reused: ../scripts (scene.sh, run_scene.sh,
+# expect_error.sh, seam_share.sh, every_test.sh, every_periodic_test.sh) and
+# the packaged path's inputs (../lammps, ../stability).
+set(LMP_IN ${CMAKE_SOURCE_DIR}/tests/lammps)
+set(ERROR_INPUT ${LMP_IN}/errors/in.error)
+set(AS_PLUGIN ${HOSTS}/as-build-plugin)
+set(PLUGIN_LMP ${AS_PLUGIN}/src/lammps/lmp_reinforce)    # lmp, reinforceplugin.so auto-loaded
+set(I "Illegal fix reinforce/invert command: ")
+set(R "Fix reinforce/invert ")
+set(F "fix r all reinforce/invert")
+set(BASIC "--box 0 0.4 0 0.2 0 0.2 --radius 0.004 0.008 --fcc --bar 0.01 0.07 0.1 0.39 0.07 0.1 0.005 0.0075 --bar 0.01 0.13 0.1 0.39 0.13 0.1 0.005 0.0075 --bar 0.2 0.01 0.05 0.2 0.19 0.05 0.005 0.0075")
+set(PERIODIC "--box 0 0.6 0 0.3 0 0.3 --radius 0.004 0.008 --fcc --bar 0 0.1 0.1 0.5925 0.1 0.1 0.005 0.0075 --bar 0 0.2 0.2 0.5925 0.2 0.2 0.005 0.0075 --bar 0.3 0 0.2 0.3 0.2925 0.2 0.005 0.0075 --bar 0.15 0 0.15 0.15 0.2925 0.15 0.005 0.0075 --bar 0.45 0 0.1 0.45 0.2925 0.1 0.005 0.0075")
+set(RANGE "--rmin 0.004 --rmax 0.008")
+
+# src_error(NAME NP EXPECTED FIX [-var ...]): one exact ERROR line (expect_error.sh).
+function(src_error name np expected fix)
+  add_test(NAME src_lammps_error_${name}
+           COMMAND ${SCRIPTS}/expect_error.sh ${PLUGIN_LMP} ${np} ${ERROR_INPUT} "${expected}" -var fix "${fix}" ${ARGN})
+  set_tests_properties(src_lammps_error_${name} PROPERTIES TIMEOUT 180 ENVIRONMENT "EXPECT_EXACT=1"
+                       PASS_REGULAR_EXPRESSION "PASS: " FAIL_REGULAR_EXPRESSION "FAIL")
+  if(np GREATER 1)
+    set_tests_properties(src_lammps_error_${name} PROPERTIES PROCESSORS 2)
+  endif()
+endfunction()
+
+# src_scene(NAME NP AS_BUILD MAKE_ARGS VARS CHECK_ARGS [ENV]): a scene (scene.sh, run_scene.sh).
+function(src_scene name np as_build make_args vars check_args)
+  separate_arguments(make_args)
+  separate_arguments(vars UNIX_COMMAND "${vars}")
+  separate_arguments(check_args)
+  add_test(NAME src_lammps_${name}_np${np}
+           COMMAND ${SCRIPTS}/scene.sh lammps ${LMP_IN}/in.scene ${name} ${np} ${as_build}
+                   -- ${make_args} -- ${vars} -- ${check_args})
+  set_tests_properties(src_lammps_${name}_np${np} PROPERTIES TIMEOUT 300 FAIL_REGULAR_EXPRESSION "FAIL"
+                       PASS_REGULAR_EXPRESSION "PASS ${name} np=${np}" ENVIRONMENT "${ARGN}")
+  if(np GREATER 1)
+    set_tests_properties(src_lammps_${name}_np${np} PROPERTIES PROCESSORS 2)
+  endif()
+endfunction()
+
+# ---- The plugin, loaded by the input itself (plugin load), in a plain lmp.
+add_test(NAME src_lammps_plugin_load
+         COMMAND ${SCRIPTS}/expect_error.sh ${LMP_PLAIN} 1 ${CMAKE_CURRENT_SOURCE_DIR}/in.plugin_load
+                 "${I}unknown keyword 'foo'" -var plugin ${CMAKE_BINARY_DIR}/plugin/reinforceplugin.so
+                 -var errors ${ERROR_INPUT} -var fix "${F} 0 bars foo 1")
+set_tests_properties(src_lammps_plugin_load PROPERTIES TIMEOUT 180 ENVIRONMENT "EXPECT_EXACT=1"
+                     PASS_REGULAR_EXPRESSION "PASS: " FAIL_REGULAR_EXPRESSION "FAIL")
+
+# ---- Scenes with the checker: 1, 2, 4 processes; deletions (AtomVec::copy)
+# with each atom map; periodic with seams; N > 0.
+foreach(np 1 2 4)
+  src_scene(scene_basic ${np} ${AS_PLUGIN} "${BASIC}" "" "${RANGE}")
+endforeach()
+foreach(map array hash none)
+  src_scene(scene_deleting_map_${map} 2 ${AS_PLUGIN} "${BASIC}" "-var extra 'tries 4' -var map ${map}" "${RANGE}")
+  set_tests_properties(src_lammps_scene_deleting_map_${map}_np2 PROPERTIES PASS_REGULAR_EXPRESSION
+                       "deleted [1-9][0-9]* kept 0.*PASS scene_deleting_map_${map} np=2")
+endforeach()
+src_scene(scene_keep 4 ${AS_PLUGIN} "${BASIC}" "-var extra 'unplaced keep tries 4'" "${RANGE} --kept-ok")
+src_scene(scene_rigid_bars 2 ${AS_PLUGIN} "${BASIC}" "-var setup 'fix bars rebar rigid single' -var extra 'tries 4'" "${RANGE}")
+set(TINY "--box 0 0.06 0 0.06 0 0.06 --radius 0.004 0.008 --fcc --bar 0 0.03 0.03 0.055 0.03 0.03 0.005 0.005 --bar 0.015 0 0.015 0.015 0.055 0.015 0.005 0.005 --bar 0.045 0.045 0 0.045 0.045 0.055 0.005 0.005")
+src_scene(tiny_periodic 4 ${AS_PLUGIN} "${TINY}" "-var bx p -var by p -var bz p" "${RANGE}")
+foreach(grid "2 1 1" "2 2 1")
+  string(REPLACE " " "x" tag "${grid}")
+  string(REPLACE " " "*" np "${grid}")
+  math(EXPR np "${np}")
+  set(SEAMS_2x1x1 "x=0,0.3/y=0")
+  set(SEAMS_2x2x1 "x=0,0.3/y=0,0.15")
+  src_scene(periodic_${tag} ${np} ${AS_PLUGIN} "${PERIODIC}"
+            "-var bx p -var by p -var procs '${grid}' -var extra 'tries 15'" "${RANGE}"
+            "SCENE_REFERENCE=1" "SCENE_POST=${SCRIPTS}/seam_share.sh 0.008 ${SEAMS_${tag}}")
+  set_tests_properties(src_lammps_periodic_${tag}_np${np} PROPERTIES PASS_REGULAR_EXPRESSION
+                       "deleted [1-9].*PASS: no thinning at seams.*PASS periodic_${tag} np=${np}")
+endforeach()
+foreach(np 1 2)
+  add_test(NAME src_lammps_every_n_steps_np${np} COMMAND ${SCRIPTS}/every_test.sh ${AS_PLUGIN} ${np})
+  set_tests_properties(src_lammps_every_n_steps_np${np} PROPERTIES TIMEOUT 300
+                       FAIL_REGULAR_EXPRESSION "FAIL" PASS_REGULAR_EXPRESSION "PASS: relocation every N steps")
+endforeach()
+foreach(np 1 4)
+  add_test(NAME src_lammps_every_periodic_np${np} COMMAND ${SCRIPTS}/every_periodic_test.sh ${AS_PLUGIN} ${np})
+  set_tests_properties(src_lammps_every_periodic_np${np} PROPERTIES TIMEOUT 300 FAIL_REGULAR_EXPRESSION "FAIL"
+                       PASS_REGULAR_EXPRESSION "PASS: relocation every N steps across seams")
+endforeach()
+set_tests_properties(src_lammps_every_n_steps_np2 src_lammps_every_periodic_np4 PROPERTIES PROCESSORS 2)
+
+# ---- The same relocation as lmp_reinforce (packaged LAMMPS 2021) on the same scene.
+if(TARGET lmp_reinforce)
+  foreach(extra "" "radius 0.007 0.008 choose first tries 200")
+    string(MAKE_C_IDENTIFIER "same_as_packaged_${extra}" tname)
+    string(REGEX REPLACE "_+$" "" tname "${tname}")
+    separate_arguments(basic_list UNIX_COMMAND "${BASIC}")
+    add_test(NAME src_lammps_${tname}
+             COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/same_as_packaged.sh ${PLUGIN_LMP} $<TARGET_FILE:lmp_reinforce>
+                     ${CMAKE_BINARY_DIR}/tests "${extra}" ${basic_list})
+    set_tests_properties(src_lammps_${tname} PROPERTIES TIMEOUT 300 FAIL_REGULAR_EXPRESSION "FAIL"
+                         PASS_REGULAR_EXPRESSION "PASS: the same relocation")
+  endforeach()
+endif()
+
+# ---- Bad input: the fix's own ERROR lines, exactly as on the packaged path.
+src_error(unknown_keyword 1 "${I}unknown keyword 'foo'" "${F} 0 bars foo 1")
+src_error(missing_value 1 "${I}missing value for keyword 'tries'" "${F} 0 bars tries")
+src_error(rmin_above_rmax 1 "${I}radius rmin must be <= rmax" "${F} 0 bars radius 0.3 0.1")
+src_error(search_overflow 1 "${I}expected a number for search, got '1e400'" "${F} 0 bars search 1e400")
+src_error(tol_one 1 "${I}tol must be < 1" "${F} 0 bars tol 1")
+src_error(every_fraction 1 "${I}expected an integer for N, got '1.5'" "${F} 1.5 bars")
+src_error(rebar_group_missing 1 "${R}rebar group 'nosuch' does not exist" "${F} 0 nosuch")
+src_error(rebar_group_same 1 "${R}rebar group must differ from the fix group" "fix r bars reinforce/invert 0 bars")
+src_error(rebar_group_empty 2 "${R}rebar group 'nothing' is empty" "${F} 0 nothing")
+src_error(rebar_group_deleted_before_run 1 "${R}rebar group 'bars' does not exist" "${F} 0 bars"
+          -var post "group bars delete")
+src_error(rebar_group_emptied_between_runs 2 "${R}rebar group 'bars' is empty" "${F} 1 bars"
+          -var nrun 2 -var between "delete_atoms group bars" -var halfway no)
+src_error(region_unknown 1 "${R}region 'nowhere' does not exist" "${F} 0 bars region nowhere")
+src_error(region_deleted_before_run 1 "${R}region 'r1' does not exist" "${F} 0 bars region r1"
+          -var pre "region r1 block 0 1 0 1 0 1" -var post "region r1 delete")
+src_error(atom_style_without_radius 1 "${R}requires atom attributes radius and rmass" "${F} 0 bars"
+          -var style atomic -var setd no)
+src_error(atom_ids_off 1 "${R}requires atom IDs" "${F} 0 bars" -var ids no -var map none)
+src_error(triclinic_box 1 "${R}does not support triclinic boxes" "${F} 0 bars" -var shape prism)
+src_error(two_dimensions 1 "${R}requires a 3d simulation" "${F} 0 bars" -var dim 2)
+src_error(comm_style_tiled 2 "${R}requires comm_style brick" "${F} 0 bars" -var commstyle tiled)
+src_error(comm_mode_multi 1 "${R}requires comm_modify mode single" "${F} 0 bars"
+          -var commmode multi -var neigh multi)
+src_error(impossible_radius_range 1 "Fix reinforce/invert: impossible radius range [0, 0]" "${F} 0 bars"
+          -var matrixd 0)
+src_error(subdomains_too_thin_x 3 "Fix reinforce/invert: subdomains 0.333333 thick in x are thinner than 2*(target rmax + search + rmax) = 0.8: processes relocating in one round could place spheres in one neighbourhood; use fewer processes in x (processors command) or a smaller search gap"
+          "${F} 0 bars search 0.3" -var procs "3 1 1")
+# Issue 12, items 5 and 16 (the same tests run on lmp_reinforce: ../adapters).
+src_error(rebar_group_dynamic 1 "${R}rebar group 'dbars' is dynamic: make it static first (group dbars static)"
+          "${F} 0 dbars" -var pre "if 1 then \"variable isbar atom type==2\" \"group dbars dynamic all var isbar\"")
+src_error(matrix_in_rigid_body 1 "${R}cannot move atoms of rigid bodies: matrix atoms belong to fix rb (rigid); leave the bodies out of the fix group"
+          "${F} 0 bars" -var pre "fix rb all rigid single")
+src_error(matrix_in_rigid_small_body 2 "${R}cannot move atoms of rigid bodies: matrix atoms belong to fix rb (rigid/small); leave the bodies out of the fix group"
+          "${F} 0 bars" -var pre "variable one atom 1" -var post "fix rb all rigid/small custom v_one")
+# Issue 12, item 19: N = 0 done, then its rebar group and region gone: the
+# next runs go on (no re-check in init()).
+add_test(NAME src_lammps_done_fix_never_stops_a_run
+         COMMAND ${CMAKE_SOURCE_DIR}/tests/adapters/expect_success.sh ${PLUGIN_LMP} 1 ${ERROR_INPUT}
+                 -var pre "region r1 block 0 1 0 1 0 1" -var fix "${F} 0 bars region r1"
+                 -var between "if 1 then 'group bars delete' 'region r1 delete'")
+set_tests_properties(src_lammps_done_fix_never_stops_a_run PROPERTIES TIMEOUT 180
+                     PASS_REGULAR_EXPRESSION "PASS: " FAIL_REGULAR_EXPRESSION "FAIL")
+
+# ---- The in-tree package (cmake -D PKG_REINFORCE=on), one scene; the
+# bigbig host (64-bit atom IDs) with its plugin, one scene.
+src_scene(package_scene_basic 2 ${HOSTS}/as-build-package "${BASIC}" "-var extra 'tries 4'" "${RANGE}")
+src_scene(bigbig_scene_basic 2 ${HOSTS}/as-build-bigbig "${BASIC}" "-var extra 'tries 4'" "${RANGE}")
+add_test(NAME src_lammps_package_registered
+         COMMAND sh -c "${LMP_PACKAGE} -h | grep -A40 '^\\* Fix styles' | grep -q 'reinforce/invert' && echo 'PASS: reinforce/invert is a fix style of the package build'")
+set_tests_properties(src_lammps_package_registered PROPERTIES PASS_REGULAR_EXPRESSION "PASS: ")
