@@ -155,6 +155,27 @@ elif [ "${REINFORCE_QUICK:-0}" != 1 ]; then
   fi
 fi
 
+# ---- part "source": hosts built from source (tests/source_hosts) -----------
+# Runs when a tree is named: REINFORCE_LAMMPS_SOURCE and/or
+# REINFORCE_LIGGGHTS_SOURCE, each a source tree or its .tar.gz (.ci/run names
+# ../shared/hosts). A named tree that does not build fails the command.
+if [ -z "${REINFORCE_LAMMPS_SOURCE:-}${REINFORCE_LIGGGHTS_SOURCE:-}" ]; then
+  skipped+=("source (no host tree named: set REINFORCE_LAMMPS_SOURCE, REINFORCE_LIGGGHTS_SOURCE to a source tree or its .tar.gz)")
+elif [ "${REINFORCE_QUICK:-0}" = 1 ]; then
+  skipped+=("source (REINFORCE_QUICK=1)")
+elif why=$(skip_reason source) && [ -n "$why" ]; then
+  skipped+=("source (skipped on purpose: $why)")
+else
+  echo "== source-built hosts: LAMMPS (plugin, in-tree package, bigbig), LIGGGHTS (drop-in)"
+  if bash "$top/tests/source_hosts/prepare.sh" "$top/build-source"; then
+    part=source run_ctest "$top/build-source" -R '^src_'
+  else
+    echo "source-built hosts: build failed"; failed=$((failed + 1))
+    parts+=("source: FAILED: a named host tree did not unpack, configure or build (above)")
+  fi
+fi
+# ---- end of part "source" ----------------------------------------------------
+
 # More parts go above this line: `part=NAME run_ctest DIR [ctest args]` lists
 # NAME with its counts in the summary; a part left out: skipped+=("NAME (why)").
 summary; echo "total: $passed passed, $failed failed"
