@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Makes the quality tests' scenes with grow_packing (tests/quality/README.md):
+#   make_scenes.sh GROW_PACKING OUTDIR [CASE...]     (cases: wide narrow dense)
+# For each case, OUTDIR/CASE/ gets
+#   before.data   the matrix grown alone, then the bars added (the fix's input)
+#   ref.data      the same law grown around the same bars (the reference)
+#   boundary      "f f f" or "p p p"
+set -euo pipefail
+grow=$1 out=$2
+shift 2
+cases=("$@")
+[ ${#cases[@]} -gt 0 ] || cases=(wide narrow dense)
+box=(--box 0 0.18 0 0.14 0 0.14)
+# Three bars of overlapping rebar spheres (radius 5 mm, 7.5 mm apart): two
+# along x, one of them through the box centre (it crosses the subdomain seams
+# at 2 and 4 processes), one along y. With walls the end spheres touch the
+# walls; in the periodic box the chains close through the boundary.
+walls_bars=(--bar 0.005 0.07 0.07 0.175 0.07 0.07 0.005 0.0075
+            --bar 0.005 0.035 0.035 0.175 0.035 0.035 0.005 0.0075
+            --bar 0.09 0.005 0.105 0.09 0.135 0.105 0.005 0.0075)
+periodic_bars=(--bar 0.00375 0.07 0.07 0.17625 0.07 0.07 0.005 0.0075
+               --bar 0.00375 0.035 0.035 0.17625 0.035 0.035 0.005 0.0075
+               --bar 0.09 0.00375 0.105 0.09 0.13625 0.105 0.005 0.0075)
+for c in "${cases[@]}"; do
+  mkdir -p "$out/$c"
+  case $c in
+    wide)   args=(--radius 0.0025 0.0075 --phi 0.58 --boundary f f f "${walls_bars[@]}"); bnd="f f f" ;;
+    narrow) args=(--radius 0.004 0.005 --phi 0.58 --boundary f f f "${walls_bars[@]}"); bnd="f f f" ;;
+    dense)  args=(--radius 0.0025 0.0075 --phi 0.64 --boundary p p p "${periodic_bars[@]}"); bnd="p p p" ;;
+    *) echo "make_scenes.sh: unknown case $c"; exit 2 ;;
+  esac
+  "$grow" "$out/$c/before.data" "${box[@]}" "${args[@]}" --seed 11
+  "$grow" "$out/$c/ref.data" "${box[@]}" "${args[@]}" --seed 12 --around-bars
+  echo "$bnd" > "$out/$c/boundary"
+done

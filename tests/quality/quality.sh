@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# One quality test: run the fix (or delete_atoms overlap) on a scene made by
+# make_scenes.sh, check it with check_scene, measure it with scene_quality
+# against the reference grown around the same bars.
+#   quality.sh CASE NP LMP CHECK_SCENE SCENE_QUALITY SCENES [--] [scene_quality args]
+# SCENES/CASE/{before.data,ref.data,boundary} must exist (make_scenes.sh).
+# QUALITY_LMP_VARS="-var method delete -var cut 0.0125": more lmp arguments
+# (in.quality lists them).
+set -euo pipefail
+case=$1 np=$2 lmp=$3 check=$4 quality=$5 scenes=$6
+shift 6
+[ "${1:-}" = "--" ] && shift
+# shellcheck disable=SC2206    # words of a list of arguments
+vars=(${QUALITY_LMP_VARS:-})
+here=$(cd "$(dirname "$0")" && pwd)
+dir=$scenes/$case
+[ -f "$dir/before.data" ] && [ -f "$dir/ref.data" ] || { echo "FAIL: no scene in $dir (make_scenes.sh)"; exit 1; }
+read -r bx by bz < "$dir/boundary"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+work=$(mktemp -d "${TMPDIR:-/tmp}/quality_${case}.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+launch=(mpirun -np "$np")
+[ "$np" -eq 1 ] && launch=()
+start=$(date +%s.%N)
+(cd "$here" && "${launch[@]}" "$lmp" -in in.quality -log "$work/log" -screen none \
+   -var data "$dir/before.data" -var out "$work" -var bx "$bx" -var by "$by" -var bz "$bz" "${vars[@]}") \
+  || { echo "FAIL: $lmp exited non-zero"; tail -5 "$work/log"; exit 1; }
+end=$(date +%s.%N)
+read -r _ targets relocated deleted kept < <(grep '^TOTALS ' "$work/log" | tail -1)
+echo "$case np=$np: targets $targets relocated $relocated deleted $deleted kept $kept ($(awk -v a="$start" -v b="$end" 'BEGIN {printf "%.2f", b - a}') s with start-up)"
+grep '^fix reinforce/invert:' "$work/log" | tail -1 || true
+"$check" --before "$work/before.dump" --after "$work/after.dump" --deleted "$deleted" \
+  | grep -v '^INFO' || { echo "FAIL: check_scene (above)"; exit 1; }
+"$quality" --before "$work/before.dump" --after "$work/after.dump" --reference "$dir/ref.data" \
+  --boundary $bx $by $bz --quiet-profile "$@"
