@@ -604,7 +604,7 @@ int run_check(Options o)
   // Moved spheres keep their material density: mass / r^3 as before (when
   // both dumps have a mass column).
   if (before.has_mass && after.has_mass) {
-    long weighed = 0, changed = 0;
+    long weighed = 0, changed = 0, resized = 0;
     double worst_density = 0;
     for (std::size_t i = 0; i < after.atoms.size(); ++i) {
       const Atom &a = after.atoms[i];
@@ -613,12 +613,14 @@ int run_check(Options o)
       const double da = a.mass / (a.r * a.r * a.r), db = b->mass / (b->r * b->r * b->r);
       const double rel = std::fabs(da - db) / std::max(std::fabs(da), std::fabs(db));
       ++weighed;
+      resized += a.r != b->r;
       if (!(rel <= 1e-12)) ++changed;    // NaN (mass 0 / 0) counts as changed
       if (rel > worst_density || std::isnan(rel)) worst_density = rel;
     }
     check(changed == 0, "moved spheres kept their density (mass / volume) (" + str(changed) +
-                            " of " + str(weighed) + " changed; largest relative change " +
-                            num(worst_density) + ")");
+                            " of " + str(weighed) + " changed; " + str(resized) +
+                            " with a new radius; largest relative change " + num(worst_density) +
+                            ")");
   } else {
     std::printf("INFO: no mass column in both dumps: density not checked\n");
   }

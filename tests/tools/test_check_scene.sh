@@ -68,7 +68,7 @@ expect 0 '^PASS: moved radii in \[0.5, 1\] \(the matrix range before\)' -- "${B[
 expect 1 '^FAIL: moved radii in \[0.5, 1\] \(1 outside' -- "${B[@]}" --after "$td/after_radius.dump" --rmin 0.5 --rmax 1
 expect 1 '^FAIL: moved radii in \[0.5, 0.8\] \(1 outside' -- "${B[@]}" --after "$td/after_ok.dump" --rmin 0.5 --rmax 0.8
 # density (mass / volume) of moved spheres: radius 1 -> 0.8 with mass 1 -> 0.512, or mass unchanged
-expect 0 '^PASS: moved spheres kept their density \(mass / volume\) \(0 of 1 changed' -- "${B[@]}" --after "$td/after_mass_ok.dump"
+expect 0 '^PASS: moved spheres kept their density \(mass / volume\) \(0 of 1 changed; 1 with a new radius' -- "${B[@]}" --after "$td/after_mass_ok.dump"
 expect 1 '^FAIL: moved spheres kept their density \(mass / volume\) \(1 of 1 changed' -- "${B[@]}" --after "$td/after_mass_wrong.dump"
 # walls (ff dimensions)
 expect 0 '^PASS: moved spheres wholly inside the walls' -- "${B[@]}" --after "$td/after_ok.dump"
