@@ -29,6 +29,7 @@
 #include "neighbor.h"
 #endif
 
+#include "fix_options.h"
 #include "invocation.h"
 #include "mpi_gather.h"
 
@@ -351,7 +352,9 @@ private:
 
 /* ---------------------------------------------------------------------- */
 
-FixReinforceInvert::FixReinforceInvert(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
+FixReinforceInvert::FixReinforceInvert(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), parsed(new reinforce::FixOptions), options(*parsed),
+    totals(reinforce::kOutputSize, 0.0)
 {
   std::vector<std::string> args;
   for (int i = 3; i < narg; ++i) args.emplace_back(arg[i]);
@@ -386,6 +389,11 @@ FixReinforceInvert::~FixReinforceInvert()
 {
   if (copymode) return;
   atom->delete_callback(id, Atom::GROW);
+}
+
+bool FixReinforceInvert::done() const
+{
+  return invoked && options.every <= 0;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -536,7 +544,8 @@ void FixReinforceInvert::invoke()
   // Nothing stale: every flag is clear between invocations.
   std::fill(pending.begin(), pending.end(), kPresent);
 
-  totals = reinforce::output_vector(t);
+  const auto out = reinforce::output_vector(t);
+  totals.assign(out.begin(), out.end());
 }
 
 /* ---------------------------------------------------------------------- */

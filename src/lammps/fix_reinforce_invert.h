@@ -35,12 +35,14 @@ FixStyle(reinforce/invert,FixReinforceInvert);
 
 #include "fix.h"
 
-#include <array>
-
-#include "fix_options.h"
-#include "invocation.h"
-
+#include <memory>
 #include <vector>
+
+// No engine header here: LAMMPS's own files include this one (style_fix.h)
+// with LAMMPS's C++ standard, while the engine needs C++17.
+namespace reinforce {
+struct FixOptions;
+}
 
 namespace LAMMPS_NS {
 
@@ -72,15 +74,16 @@ private:
   class Host;    // reinforce::HostHooks on LAMMPS's atoms and communication
   friend class Host;
 
-  reinforce::FixOptions options;
+  std::unique_ptr<reinforce::FixOptions> parsed;    // the fix's arguments
+  reinforce::FixOptions &options;
   int rebar_group = -1, rebar_bit = 0;
   class Region *region = nullptr;
   std::vector<int> pending;
   bool invoked = false;    // the relocation at the start of the first run is done
   class NeighList *list = nullptr;    // source-built: the host's occasional full list
-  std::array<double, reinforce::kOutputSize> totals = {};
+  std::vector<double> totals;    // f_ID[1..], the latest invocation
 
-  bool done() const { return invoked && options.every <= 0; }    // N = 0, relocated once
+  bool done() const;    // N = 0, relocated once
   void check_styles();
   void find_groups_and_region();
   void check_rigid_bodies();

@@ -151,3 +151,7 @@ src_scene(bigbig_scene_basic 2 ${HOSTS}/as-build-bigbig "${BASIC}" "-var extra '
 add_test(NAME src_lammps_package_registered
          COMMAND sh -c "${LMP_PACKAGE} -h | grep -A40 '^\\* Fix styles' | grep -q 'reinforce/invert' && echo 'PASS: reinforce/invert is a fix style of the package build'")
 set_tests_properties(src_lammps_package_registered PROPERTIES PASS_REGULAR_EXPRESSION "PASS: ")
+add_test(NAME src_lammps_package_make_install
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/make_install_test.sh ${REINFORCE_LAMMPS_SOURCE_DIR})
+set_tests_properties(src_lammps_package_make_install PROPERTIES TIMEOUT 120
+                     PASS_REGULAR_EXPRESSION "PASS: " FAIL_REGULAR_EXPRESSION "FAIL")

@@ -8,8 +8,9 @@
 #
 # It copies the fix and the engine (src/core, no host headers) into
 # src/REINFORCE/, and adds REINFORCE to the package list of cmake/CMakeLists.txt
-# (with C++17, which the engine needs, when the package is on). Safe to run
-# again: it refreshes the copies and patches nothing twice.
+# (its files compiled as C++17, which the engine needs; the rest of LAMMPS
+# keeps its own standard). Safe to run again: it refreshes the copies and
+# patches nothing twice.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 top=$(cd "$here/../../.." && pwd)
@@ -24,14 +25,20 @@ cp "$top"/src/core/*.h "$top"/src/core/*.cpp "$pkg/"
 cp "$here/Install.sh" "$here/README" "$pkg/"
 
 # CMake: a standard package (sources globbed from src/REINFORCE, styles
-# registered from its headers); C++17 when it is on, as LAMMPS does for KOKKOS.
+# registered from its headers).
 cm="$tree/cmake/CMakeLists.txt"
 if ! grep -q '^  REINFORCE$' "$cm"; then
   sed -i 's/^set(STANDARD_PACKAGES$/&\n  REINFORCE/' "$cm"
   grep -q '^  REINFORCE$' "$cm" || { echo "install.sh: no STANDARD_PACKAGES list in $cm"; exit 1; }
 fi
-if ! grep -q 'PKG_REINFORCE AND' "$cm"; then
-  sed -i 's/^set(CMAKE_CXX_STANDARD_REQUIRED ON)$/# fix reinforce\/invert (package REINFORCE): its engine needs C++17\nif(PKG_REINFORCE AND (CMAKE_CXX_STANDARD LESS 17))\n  set(CMAKE_CXX_STANDARD 17)\nendif()\n&/' "$cm"
-  grep -q 'PKG_REINFORCE AND' "$cm" || { echo "install.sh: no CMAKE_CXX_STANDARD_REQUIRED line in $cm"; exit 1; }
+if ! grep -q 'REINFORCE_SOURCES' "$cm"; then
+  cat >>"$cm" <<'CMAKE'
+
+# fix reinforce/invert (package REINFORCE, added by its install.sh): its
+# engine needs C++17; only its own files are compiled so (GCC and Clang).
+if(PKG_REINFORCE AND (CMAKE_CXX_STANDARD LESS 17))
+  set_source_files_properties(${REINFORCE_SOURCES} PROPERTIES COMPILE_OPTIONS "-std=c++17")
+endif()
+CMAKE
 fi
 echo "install.sh: package REINFORCE in $pkg (cmake -D PKG_REINFORCE=on, or make yes-reinforce)"
