@@ -120,7 +120,6 @@ src_error(atom_style_without_radius 1 "${R}requires atom attributes radius and r
           -var style atomic -var setd no)
 src_error(atom_ids_off 1 "${R}requires atom IDs" "${F} 0 bars" -var ids no -var map none)
 src_error(triclinic_box 1 "${R}does not support triclinic boxes" "${F} 0 bars" -var shape prism)
-src_error(two_dimensions 1 "${R}requires a 3d simulation" "${F} 0 bars" -var dim 2)
 src_error(comm_style_tiled 2 "${R}requires comm_style brick" "${F} 0 bars" -var commstyle tiled)
 src_error(comm_mode_multi 1 "${R}requires comm_modify mode single" "${F} 0 bars"
           -var commmode multi -var neigh multi)
@@ -154,4 +153,25 @@ set_tests_properties(src_lammps_package_registered PROPERTIES PASS_REGULAR_EXPRE
 add_test(NAME src_lammps_package_make_install
          COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/make_install_test.sh ${REINFORCE_LAMMPS_SOURCE_DIR})
 set_tests_properties(src_lammps_package_make_install PROPERTIES TIMEOUT 120
+                     PASS_REGULAR_EXPRESSION "PASS: " FAIL_REGULAR_EXPRESSION "FAIL")
+
+# ---- Issue 12, item 18: an ERROR thrown during the relocation (this LAMMPS
+# throws them) leaves the ghost cutoff as it was. A program linked with the
+# plain host's liblammps.a, loading the plugin.
+find_package(OpenMP REQUIRED COMPONENTS CXX)
+find_package(PNG REQUIRED)
+find_package(ZLIB REQUIRED)
+add_executable(error_restores_cutoff error_restores_cutoff.cpp)
+target_include_directories(error_restores_cutoff SYSTEM PRIVATE ${REINFORCE_LAMMPS_SOURCE_DIR}/src)
+target_compile_definitions(error_restores_cutoff PRIVATE LAMMPS_SMALLBIG)
+target_link_libraries(error_restores_cutoff PRIVATE ${HOSTS}/lammps-plain/build/liblammps.a MPI::MPI_CXX
+                      OpenMP::OpenMP_CXX PNG::PNG ZLIB::ZLIB ${CMAKE_DL_LIBS})
+set_target_properties(error_restores_cutoff PROPERTIES ENABLE_EXPORTS ON)
+add_dependencies(error_restores_cutoff host_lammps)
+add_dependencies(source_hosts_lammps error_restores_cutoff)
+separate_arguments(basic_list UNIX_COMMAND "${BASIC}")
+add_test(NAME src_lammps_error_restores_ghost_cutoff
+         COMMAND sh -c "'${CMAKE_BINARY_DIR}/tests/make_scene' \"$0\" ${BASIC} >/dev/null && '$<TARGET_FILE:error_restores_cutoff>' '${CMAKE_BINARY_DIR}/plugin/reinforceplugin.so' \"$0\"; s=$?; rm -f \"$0\"; exit $s"
+                 ${CMAKE_CURRENT_BINARY_DIR}/error_restores_cutoff.data)
+set_tests_properties(src_lammps_error_restores_ghost_cutoff PROPERTIES TIMEOUT 120 ENVIRONMENT "${MPI_ENV}"
                      PASS_REGULAR_EXPRESSION "PASS: " FAIL_REGULAR_EXPRESSION "FAIL")
