@@ -82,6 +82,9 @@ int FixReinforceInvert::setmask()
 
 void FixReinforceInvert::init()
 {
+  // N = 0 and done: nothing it could check matters any more, and nothing
+  // about it may stop a later run (its region may be gone).
+  if (invoked_ && options_.every <= 0) return;
   if (domain->triclinic) fail("Fix reinforce/invert does not support triclinic boxes");
   // communicate multi ignores the raised ghost cutoff, and ghosts of one
   // group only would hide neighbours: both would leave overlaps.

@@ -146,7 +146,9 @@ set_tests_properties(src_lammps_done_fix_never_stops_a_run PROPERTIES TIMEOUT 18
 # ---- The in-tree package (cmake -D PKG_REINFORCE=on), one scene; the
 # bigbig host (64-bit atom IDs) with its plugin, one scene.
 src_scene(package_scene_basic 2 ${HOSTS}/as-build-package "${BASIC}" "-var extra 'tries 4'" "${RANGE}")
-src_scene(bigbig_scene_basic 2 ${HOSTS}/as-build-bigbig "${BASIC}" "-var extra 'tries 4'" "${RANGE}")
+src_scene(bigbig_scene_basic 2 ${HOSTS}/as-build-bigbig "${BASIC}" "-var extra 'tries 4' -var map hash" "${RANGE}")
+set_tests_properties(src_lammps_bigbig_scene_basic_np2 PROPERTIES PASS_REGULAR_EXPRESSION
+                     "deleted [1-9][0-9]* kept 0.*PASS bigbig_scene_basic np=2")
 add_test(NAME src_lammps_package_registered
          COMMAND sh -c "${LMP_PACKAGE} -h | grep -A40 '^\\* Fix styles' | grep -q 'reinforce/invert' && echo 'PASS: reinforce/invert is a fix style of the package build'")
 set_tests_properties(src_lammps_package_registered PROPERTIES PASS_REGULAR_EXPRESSION "PASS: ")
