@@ -39,7 +39,7 @@ if [ -n "${REINFORCE_LAMMPS_SOURCE:-}" ]; then
   lmp=$(tree_of lammps "$REINFORCE_LAMMPS_SOURCE")
   echo "source-built LAMMPS: $lmp"
   args+=("-DREINFORCE_LAMMPS_SOURCE_DIR=$lmp")
-  targets+=(source_hosts_lammps lmp_reinforce)
+  targets+=(source_hosts_lammps)
 else
   args+=("-DREINFORCE_LAMMPS_SOURCE_DIR=")
 fi
