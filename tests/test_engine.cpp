@@ -53,12 +53,15 @@ Scene make_scene(unsigned seed, double bar_r = 0.03, double spacing = 0.085)
   return s;
 }
 
-Settings default_settings()
+Settings default_settings(SizeMode size = SizeMode::Keep)
 {
   Settings st;
   st.rmin = kRmin;
   st.rmax = kRmax;
   st.search = 2 * kRmax;
+  st.zone = 3 * kRmax;
+  st.push = kRmax;
+  st.size = size;
   return st;
 }
 
@@ -67,23 +70,26 @@ void mark(Scene &s, double tol)
   for (std::size_t i : find_targets(s.particles, tol)) s.particles[i].role = Role::Target;
 }
 
-// The scene after the placements: relocated spheres moved, unplaced ones
-// deleted (or kept).
-std::vector<Particle> apply(const Scene &s, const std::vector<Placement> &placements, bool keep)
+// The scene after a relocation: relocated spheres moved, pushed ones
+// shifted (every copy), unplaced ones deleted (or kept).
+std::vector<Particle> apply(const Scene &s, const Relocation &rel, bool keep)
 {
   std::vector<Particle> out = s.particles;
   std::vector<bool> gone(out.size(), false);
-  for (const Placement &p : placements) {
-    if (p.placed) {
-      out[p.index].x = p.x;
-      out[p.index].r = p.r;
-      out[p.index].role = Role::Matrix;
+  for (const TargetResult &t : rel.targets) {
+    if (t.outcome == Outcome::Placed) {
+      out[t.index].x = t.x;
+      out[t.index].r = t.r;
+      out[t.index].role = Role::Matrix;
     } else if (keep) {
-      out[p.index].role = Role::Matrix;
+      out[t.index].role = Role::Matrix;
     } else {
-      gone[p.index] = true;
+      gone[t.index] = true;
     }
   }
+  for (const Push &p : rel.pushes)
+    for (Particle &q : out)
+      if (q.id == p.id) q.x = q.x + p.dx;
   std::vector<Particle> kept;
   for (std::size_t i = 0; i < out.size(); ++i)
     if (!gone[i]) kept.push_back(out[i]);
@@ -112,23 +118,25 @@ double worst_overlap_of_moved(const std::vector<Particle> &after, const Scene &b
 
 }    // namespace
 
-TEST(Engine, RelocatesBarOverlapsWithoutOverlap)
+TEST(Engine, FitModeRelocatesBarOverlapsWithoutOverlap)
 {
   Scene s = make_scene(1);
-  const Settings st = default_settings();
+  Settings st = default_settings(SizeMode::Fit);
+  st.displaced = 2;    // the paper tries every target
   mark(s, st.tol);
   Stats stats;
-  const auto placements = relocate_targets(s.particles, st, s.domain, false, stats);
+  const Relocation rel = relocate_targets(s.particles, st, s.domain, false, stats);
   ASSERT_GT(stats.targets, 10);
-  EXPECT_EQ(stats.targets, static_cast<std::int64_t>(placements.size()));
+  EXPECT_EQ(stats.targets, static_cast<std::int64_t>(rel.targets.size()));
   EXPECT_EQ(stats.targets, stats.relocated + stats.unplaced);
+  EXPECT_TRUE(rel.pushes.empty());    // fit mode moves nothing else
   // A sparse packing has room for nearly every target.
   EXPECT_GE(stats.relocated, 0.9 * stats.targets);
-  const auto after = apply(s, placements, false);
+  const auto after = apply(s, rel, false);
   EXPECT_LE(worst_overlap_of_moved(after, s), st.tol);
   EXPECT_LE(stats.max_overlap, st.tol);
-  for (const Placement &p : placements) {
-    if (!p.placed) continue;
+  for (const TargetResult &p : rel.targets) {
+    if (p.outcome != Outcome::Placed) continue;
     EXPECT_GE(p.r, st.rmin);
     EXPECT_LE(p.r, st.rmax);
     // Wholly inside the non-periodic box.
@@ -142,13 +150,68 @@ TEST(Engine, RelocatesBarOverlapsWithoutOverlap)
   // The counts follow from the placements.
   std::int64_t placed = 0;
   double volume = 0;
-  for (const Placement &p : placements)
-    if (p.placed) {
+  for (const TargetResult &p : rel.targets)
+    if (p.outcome == Outcome::Placed) {
       ++placed;
       volume += 4.0 / 3.0 * M_PI * p.r * p.r * p.r;
     }
   EXPECT_EQ(placed, stats.relocated);
   EXPECT_NEAR(volume, stats.volume_after, 1e-12);
+}
+
+// Keep mode on a denser packing: every relocated sphere keeps its radius,
+// room is made by pushing neighbours, and nothing overlaps afterwards.
+// Pushed spheres lie within `zone` of the bar, move at most `push`, and no
+// sphere outside that zone moves. Targets mostly inside the bar are
+// deleted as displaced.
+TEST(Engine, KeepModeKeepsRadiiAndMakesRoom)
+{
+  Scene s = make_scene(11, 0.03, 0.066);
+  for (Particle &p : s.particles)    // the bar between lattice rows, not on one
+    if (p.role == Role::Rebar) p.x = p.x + Vec3{0, 0.036, 0.036};
+  const Settings st = default_settings();
+  mark(s, st.tol);
+  Stats stats;
+  const Relocation rel = relocate_targets(s.particles, st, s.domain, false, stats);
+  ASSERT_GT(stats.targets, 10);
+  EXPECT_GT(stats.pushed, 0);
+  EXPECT_GT(stats.relocated, stats.targets / 2);
+  EXPECT_EQ(stats.targets, stats.relocated + stats.unplaced);
+  const std::vector<Particle> after = apply(s, rel, false);
+  EXPECT_LE(worst_overlap_of_moved(after, s), st.tol);
+  EXPECT_LE(stats.max_overlap, st.tol);
+  for (const TargetResult &t : rel.targets) {
+    const Particle &before = s.particles[t.index];
+    if (t.outcome == Outcome::Placed) {
+      EXPECT_EQ(t.r, before.r);
+      EXPECT_LE(norm(t.x - before.x), before.r + st.search + 1e-12);
+    } else if (t.outcome == Outcome::Displaced) {
+      // Its centre lies in the bar, up to the sampling of the volume fraction.
+      double depth = INFINITY;
+      for (const Particle &q : s.particles)
+        if (q.role == Role::Rebar) depth = std::min(depth, norm(q.x - before.x) - q.r);
+      EXPECT_LT(depth, 0.1 * before.r);
+    }
+  }
+  double largest = 0;
+  for (const Push &p : rel.pushes) {
+    largest = std::max(largest, norm(p.dx));
+    for (const Particle &q : s.particles) {
+      if (q.id != p.id) continue;
+      EXPECT_EQ(q.role, Role::Matrix);
+      double gap = INFINITY;
+      for (const Particle &b : s.particles)
+        if (b.role == Role::Rebar) gap = std::min(gap, norm(b.x - q.x) - b.r - q.r);
+      EXPECT_LE(gap, st.zone);
+    }
+  }
+  EXPECT_LE(largest, st.push);
+  EXPECT_NEAR(largest / st.rmin, stats.max_push, 1e-12);
+  // The displaced volume is what the fix removes.
+  double removed = 0;
+  for (const TargetResult &t : rel.targets)
+    if (t.outcome != Outcome::Placed) removed += 4.0 / 3.0 * M_PI * std::pow(s.particles[t.index].r, 3);
+  EXPECT_NEAR(removed, stats.volume_removed, 1e-12);
 }
 
 TEST(Engine, TargetsAreExactlyTheSpheresOverlappingRebar)
@@ -172,17 +235,17 @@ TEST(Engine, TargetsAreExactlyTheSpheresOverlappingRebar)
 TEST(Engine, ChooseClosestKeepsSizeBetterThanFirst)
 {
   Scene s = make_scene(3);
-  Settings st = default_settings();
+  Settings st = default_settings(SizeMode::Fit);
   mark(s, st.tol);
   double err[2];
   for (Choice c : {Choice::First, Choice::Closest}) {
     st.choice = c;
     Stats stats;
-    const auto placements = relocate_targets(s.particles, st, s.domain, false, stats);
+    const Relocation placements = relocate_targets(s.particles, st, s.domain, false, stats);
     double sum = 0;
     int n = 0;
-    for (const Placement &p : placements)
-      if (p.placed) {
+    for (const TargetResult &p : placements.targets)
+      if (p.outcome == Outcome::Placed) {
         sum += std::fabs(p.r - s.particles[p.index].r);
         ++n;
       }
@@ -194,22 +257,35 @@ TEST(Engine, ChooseClosestKeepsSizeBetterThanFirst)
   EXPECT_LT(err[1], err[0]);
 }
 
-TEST(Engine, SameInputSameOutput)
+// The same scene in another order (as another process count would list its
+// atoms) gives the same results, bit for bit.
+TEST(Engine, SameInputSameOutputInAnyOrder)
 {
   Scene s = make_scene(4);
   const Settings st = default_settings();
   mark(s, st.tol);
+  Scene shuffled = s;
+  std::mt19937_64 rng(4);
+  std::shuffle(shuffled.particles.begin(), shuffled.particles.end(), rng);
   Stats a, b;
-  const auto pa = relocate_targets(s.particles, st, s.domain, false, a);
-  const auto pb = relocate_targets(s.particles, st, s.domain, false, b);
-  ASSERT_EQ(pa.size(), pb.size());
-  for (std::size_t i = 0; i < pa.size(); ++i) {
-    EXPECT_EQ(pa[i].index, pb[i].index);
-    EXPECT_EQ(pa[i].placed, pb[i].placed);
-    EXPECT_EQ(pa[i].x.x, pb[i].x.x);
-    EXPECT_EQ(pa[i].x.y, pb[i].x.y);
-    EXPECT_EQ(pa[i].x.z, pb[i].x.z);
-    EXPECT_EQ(pa[i].r, pb[i].r);
+  const Relocation pa = relocate_targets(s.particles, st, s.domain, false, a);
+  const Relocation pb = relocate_targets(shuffled.particles, st, shuffled.domain, false, b);
+  ASSERT_EQ(pa.targets.size(), pb.targets.size());
+  ASSERT_GT(pa.targets.size(), 0u);
+  for (std::size_t i = 0; i < pa.targets.size(); ++i) {
+    EXPECT_EQ(pa.targets[i].id, pb.targets[i].id);
+    EXPECT_EQ(pa.targets[i].outcome, pb.targets[i].outcome);
+    EXPECT_EQ(pa.targets[i].x.x, pb.targets[i].x.x);
+    EXPECT_EQ(pa.targets[i].x.y, pb.targets[i].x.y);
+    EXPECT_EQ(pa.targets[i].x.z, pb.targets[i].x.z);
+    EXPECT_EQ(pa.targets[i].r, pb.targets[i].r);
+  }
+  ASSERT_EQ(pa.pushes.size(), pb.pushes.size());
+  for (std::size_t i = 0; i < pa.pushes.size(); ++i) {
+    EXPECT_EQ(pa.pushes[i].id, pb.pushes[i].id);
+    EXPECT_EQ(pa.pushes[i].dx.x, pb.pushes[i].dx.x);
+    EXPECT_EQ(pa.pushes[i].dx.y, pb.pushes[i].dx.y);
+    EXPECT_EQ(pa.pushes[i].dx.z, pb.pushes[i].dx.z);
   }
   EXPECT_EQ(a.solves, b.solves);
 }
@@ -222,7 +298,7 @@ TEST(Engine, NoTargetsNoWork)
   const Settings st = default_settings();
   mark(s, st.tol);
   Stats stats;
-  EXPECT_TRUE(relocate_targets(s.particles, st, s.domain, false, stats).empty());
+  EXPECT_TRUE(relocate_targets(s.particles, st, s.domain, false, stats).targets.empty());
   EXPECT_EQ(stats.targets, 0);
   EXPECT_EQ(stats.solves, 0);
 }
@@ -232,11 +308,12 @@ TEST(Engine, NoTargetsNoWork)
 TEST(Engine, UnplacedAreCountedAndKeptOnRequest)
 {
   Scene s = make_scene(6);
-  Settings st = default_settings();
+  Settings st = default_settings(SizeMode::Fit);
+  st.displaced = 2;
   st.rmin = st.rmax = 0.2;    // nothing that large fits anywhere
   mark(s, st.tol);
   Stats stats;
-  const auto placements = relocate_targets(s.particles, st, s.domain, true, stats);
+  relocate_targets(s.particles, st, s.domain, true, stats);
   EXPECT_GT(stats.targets, 0);
   EXPECT_EQ(stats.relocated, 0);
   EXPECT_EQ(stats.unplaced, stats.targets);
@@ -247,7 +324,7 @@ TEST(Engine, UnplacedAreCountedAndKeptOnRequest)
 TEST(Engine, TriesBoundTheSolves)
 {
   Scene s = make_scene(7);
-  Settings st = default_settings();
+  Settings st = default_settings(SizeMode::Fit);
   st.tries = 5;
   st.choice = Choice::Closest;
   mark(s, st.tol);
@@ -286,7 +363,7 @@ TEST(Engine, PeriodicImagesAreRespected)
     for (std::int64_t id : target_ids)
       if (p.id == id) p.role = Role::Target;
   Stats stats;
-  const auto placements = relocate_targets(s.particles, st, s.domain, false, stats);
+  const Relocation placements = relocate_targets(s.particles, st, s.domain, false, stats);
   ASSERT_GT(stats.relocated, 0);
   // Final owned spheres, wrapped into the box, checked under minimum image.
   std::vector<Particle> owned;
@@ -306,10 +383,18 @@ TEST(Engine, PeriodicImagesAreRespected)
   EXPECT_LE(worst_matrix, st.tol);
 }
 
-TEST(Engine, RequiredReachCoversNeighbourhood)
+TEST(Engine, FootprintCoversWhatARelocationTouches)
 {
-  Settings st = default_settings();
-  EXPECT_DOUBLE_EQ(required_reach(st, kRmax, 0.1), kRmax + st.search + st.rmax + 0.1);
+  Settings st = default_settings(SizeMode::Fit);
+  Footprint f = footprint(st, kRmax, 0.1);
+  EXPECT_DOUBLE_EQ(f.write, kRmax + st.search);
+  EXPECT_DOUBLE_EQ(f.read, kRmax + st.search + st.rmax + 0.1);
+  st.size = SizeMode::Keep;
+  f = footprint(st, kRmax, 0.1);
+  // New centre within r + search, pushed spheres start within r + 2 rmax of
+  // it and move at most `push`.
+  EXPECT_DOUBLE_EQ(f.write, kRmax + st.search + kRmax + 2 * st.rmax + st.push);
+  EXPECT_GE(f.read, f.write + st.zone + st.rmax + 0.1);
 }
 
 TEST(Engine, SpheresNearRebarFindsOnlyThoseWithinMargin)

@@ -1,5 +1,6 @@
 // The fix's arguments, rounds and summary line (host independent).
 #include "fix_options.h"
+#include "schedule.h"
 
 #include <gtest/gtest.h>
 
@@ -33,17 +34,45 @@ TEST(FixOptions, Defaults)
   EXPECT_FALSE(o.keep_unplaced);
   EXPECT_EQ(o.tol, 1e-6);
   EXPECT_EQ(o.polish, 1);
-  const Settings s = make_settings(o, 0.1, 0.3);
+  EXPECT_EQ(o.size, SizeMode::Keep);
+  EXPECT_EQ(o.displaced, 0.5);
+  const Settings s = make_settings(o, 0.1, 0.3, 100);
   EXPECT_EQ(s.rmin, 0.1);
   EXPECT_EQ(s.rmax, 0.3);
   EXPECT_DOUBLE_EQ(s.search, 0.6);
+  EXPECT_DOUBLE_EQ(s.zone, 0.9);
+  EXPECT_DOUBLE_EQ(s.push, 0.3);
+  EXPECT_EQ(s.size, SizeMode::Keep);
+}
+
+// Gaps, pushes and radii larger than the box are capped at its diagonal, so
+// the reach (and the ghost cutoff) stays finite.
+TEST(FixOptions, HugeValuesAreCappedByTheBox)
+{
+  const FixOptions o = parse_fix_arguments(
+      {"0", "bars", "radius", "0.004", "1e308", "search", "1e300", "zone", "1e300", "push", "1e300"});
+  const Settings s = make_settings(o, 0.004, 0.008, 0.5);
+  EXPECT_EQ(s.rmax, 0.5);
+  EXPECT_EQ(s.search, 0.5);
+  EXPECT_EQ(s.zone, 0.5);
+  EXPECT_EQ(s.push, 0.5);
+  const Footprint f = footprint(s, 0.008, 0.5);
+  EXPECT_TRUE(std::isfinite(f.read));
+}
+
+TEST(FixOptions, UnplacedKeepTriesEveryTarget)
+{
+  const Settings s = make_settings(parse_fix_arguments({"0", "bars", "unplaced", "keep"}), 1, 2, 100);
+  EXPECT_GT(s.displaced, 1);
 }
 
 TEST(FixOptions, AllKeywords)
 {
   const FixOptions o = parse_fix_arguments({"100", "bars", "radius", "0.2", "0.4", "search", "1.5",
                                             "tries", "15", "choose", "first", "unplaced", "keep",
-                                            "region", "inside", "tol", "1e-9", "polish", "0"});
+                                            "region", "inside", "tol", "1e-9", "polish", "0",
+                                            "size", "fit", "zone", "0.7", "push", "0.05",
+                                            "displaced", "0.8"});
   EXPECT_EQ(o.every, 100);
   EXPECT_TRUE(o.radius_set);
   EXPECT_EQ(o.rmin, 0.2);
@@ -55,10 +84,17 @@ TEST(FixOptions, AllKeywords)
   EXPECT_EQ(o.region, "inside");
   EXPECT_EQ(o.tol, 1e-9);
   EXPECT_EQ(o.polish, 0);
-  const Settings s = make_settings(o, 0.01, 0.02);    // the keyword wins
+  EXPECT_EQ(o.size, SizeMode::Fit);
+  EXPECT_EQ(o.zone, 0.7);
+  EXPECT_EQ(o.push, 0.05);
+  EXPECT_EQ(o.displaced, 0.8);
+  const Settings s = make_settings(o, 0.01, 0.02, 100);    // the keyword wins
   EXPECT_EQ(s.rmin, 0.2);
   EXPECT_EQ(s.rmax, 0.4);
   EXPECT_EQ(s.newton_steps, 0);
+  EXPECT_EQ(s.zone, 0.7);
+  EXPECT_EQ(s.push, 0.05);
+  EXPECT_EQ(parse_fix_arguments({"0", "bars", "displaced", "none"}).displaced, 2);
 }
 
 TEST(FixOptions, ErrorsNameTheProblem)
@@ -91,8 +127,19 @@ TEST(FixOptions, ErrorsNameTheProblem)
             I + "choose must be 'first' or 'closest', got 'best'");
   EXPECT_EQ(error_of({"0", "bars", "unplaced", "drop"}),
             I + "unplaced must be 'delete' or 'keep', got 'drop'");
-  EXPECT_EQ(error_of({"0", "bars", "tol", "-1"}), I + "tol must be > 0");
-  EXPECT_EQ(error_of({"0", "bars", "tol", "1"}), I + "tol must be < 1");
+  EXPECT_EQ(error_of({"0", "bars", "tol", "-1"}), I + "tol must be in [1e-10, 1)");
+  EXPECT_EQ(error_of({"0", "bars", "tol", "1"}), I + "tol must be in [1e-10, 1)");
+  // Below the floor, rounding would reject the very spheres a solution is
+  // tangent to.
+  EXPECT_EQ(error_of({"0", "bars", "tol", "1e-14"}), I + "tol must be in [1e-10, 1)");
+  EXPECT_EQ(error_of({"0", "bars", "tol", "4.9e-324"}),
+            I + "expected a number for tol, got '4.9e-324'");    // a denormal: out of range
+  EXPECT_EQ(error_of({"0", "bars", "size", "big"}), I + "size must be 'keep' or 'fit', got 'big'");
+  EXPECT_EQ(error_of({"0", "bars", "zone", "-1"}), I + "zone must be >= 0");
+  EXPECT_EQ(error_of({"0", "bars", "push", "nan"}), I + "expected a number for push, got 'nan'");
+  EXPECT_EQ(error_of({"0", "bars", "displaced", "0"}), I + "displaced must be in (0, 1] or 'none'");
+  EXPECT_EQ(error_of({"0", "bars", "displaced", "1.5"}),
+            I + "displaced must be in (0, 1] or 'none'");
   EXPECT_EQ(error_of({"0", "bars", "polish", "11"}), I + "polish must be in 0..10");
   EXPECT_EQ(error_of({"0", "bars", "region"}), I + "missing value for keyword 'region'");
 }
@@ -100,53 +147,75 @@ TEST(FixOptions, ErrorsNameTheProblem)
 TEST(FixOptions, ImpossibleRadiusRangeFromScene)
 {
   const FixOptions o = parse_fix_arguments({"0", "bars"});
-  EXPECT_THROW(make_settings(o, 0.0, 0.0), OptionError);    // empty matrix
-  EXPECT_THROW(make_settings(o, 0.3, 0.1), OptionError);
+  EXPECT_THROW(make_settings(o, 0.0, 0.0, 1), OptionError);    // empty matrix
+  EXPECT_THROW(make_settings(o, 0.3, 0.1, 1), OptionError);
 }
 
-// No two processes of one round may be neighbours (including across a
-// periodic boundary), for every grid up to 5 x 5 x 5 and every periodicity.
-TEST(Rounds, NeighboursNeverShareARound)
+// Blocks of one colour never touch (including across a periodic
+// boundary): two blocks of one colour are at least one block apart in some
+// dimension, so relocations in them cannot reach each other when blocks are
+// at least one footprint wide. Checked for many box shapes and widths.
+TEST(Schedule, SameColourBlocksAreSeparated)
 {
-  for (int px = 1; px <= 5; ++px)
-    for (int py = 1; py <= 5; ++py)
-      for (int pz = 1; pz <= 3; ++pz)
-        for (int mask = 0; mask < 8; ++mask) {
-          const int grid[3] = {px, py, pz};
-          const bool periodic[3] = {(mask & 1) != 0, (mask & 2) != 0, (mask & 4) != 0};
-          auto round_at = [&](int i, int j, int k) {
-            const int loc[3] = {i, j, k};
-            return colour_rounds(grid, loc, periodic);
-          };
-          std::set<int> used;
-          for (int i = 0; i < px; ++i)
-            for (int j = 0; j < py; ++j)
-              for (int k = 0; k < pz; ++k) {
-                const Rounds r = round_at(i, j, k);
-                ASSERT_LT(r.mine, r.count);
-                used.insert(r.mine);
-                // Every neighbour in the 26-neighbourhood (with wrap where
-                // periodic) that is a different process has another round.
-                for (int di = -1; di <= 1; ++di)
-                  for (int dj = -1; dj <= 1; ++dj)
-                    for (int dk = -1; dk <= 1; ++dk) {
-                      int n[3] = {i + di, j + dj, k + dk};
-                      bool exists = true;
-                      for (int d = 0; d < 3; ++d) {
-                        if (n[d] < 0 || n[d] >= grid[d]) {
-                          if (!periodic[d]) exists = false;
-                          n[d] = (n[d] + grid[d]) % grid[d];
-                        }
-                      }
-                      if (!exists || (n[0] == i && n[1] == j && n[2] == k)) continue;
-                      EXPECT_NE(round_at(n[0], n[1], n[2]).mine, r.mine)
-                          << px << "x" << py << "x" << pz << " periodic " << mask;
-                    }
-              }
-          if (px * py * pz == 1) {
-            EXPECT_EQ(round_at(0, 0, 0).count, 1);
-          }
+  for (double length : {0.3, 1.0, 2.5, 7.0})
+    for (double width : {0.1, 0.3, 0.45, 1.1, 5.0})
+      for (int mask = 0; mask < 8; ++mask) {
+        const bool periodic[3] = {(mask & 1) != 0, (mask & 2) != 0, (mask & 4) != 0};
+        const Vec3 lo{-1, 0, 2}, hi{-1 + length, 0.5 * length, 2 + 1.5 * length};
+        const BlockLattice l = make_block_lattice(lo, hi, periodic, width);
+        for (int d = 0; d < 3; ++d) {
+          EXPECT_GE(l.count[d], 1);
+          if (l.count[d] > 1) EXPECT_GE(l.width[d], width * (1 - 1e-12));
+          EXPECT_NEAR(l.count[d] * l.width[d], hi[d] - lo[d], 1e-12);
+          if (periodic[d] && l.count[d] > 1) EXPECT_EQ(l.count[d] % 2, 0);
         }
+        EXPECT_LE(l.rounds(), 8);
+        // Every pair of blocks of one colour: separated in some dimension.
+        std::vector<std::array<int, 3>> blocks;
+        for (int i = 0; i < l.count[0]; ++i)
+          for (int j = 0; j < l.count[1]; ++j)
+            for (int k = 0; k < l.count[2]; ++k) blocks.push_back({i, j, k});
+        if (blocks.size() > 300) continue;
+        auto centre = [&](const std::array<int, 3> &b) {
+          Vec3 c;
+          for (int d = 0; d < 3; ++d) c[d] = lo[d] + (b[d] + 0.5) * l.width[d];
+          return c;
+        };
+        for (std::size_t p = 0; p < blocks.size(); ++p)
+          for (std::size_t q = p + 1; q < blocks.size(); ++q) {
+            if (l.colour_of(centre(blocks[p])) != l.colour_of(centre(blocks[q]))) continue;
+            bool apart = false;
+            for (int d = 0; d < 3; ++d) {
+              int gap = std::abs(blocks[p][d] - blocks[q][d]);
+              if (periodic[d]) gap = std::min(gap, l.count[d] - gap);
+              apart = apart || gap >= 2;
+            }
+            EXPECT_TRUE(apart) << "length " << length << " width " << width << " mask " << mask;
+          }
+      }
+}
+
+// Points map to the block that holds them; points on or past the box edges
+// are clamped to the edge blocks.
+TEST(Schedule, PointsFallInTheirBlock)
+{
+  const bool periodic[3] = {false, true, false};
+  const BlockLattice l = make_block_lattice({0, 0, 0}, {1, 1, 1}, periodic, 0.3);
+  EXPECT_EQ(l.count[0], 3);
+  EXPECT_EQ(l.count[1], 2);    // 3 would break the parity across the periodic boundary
+  int b[3];
+  l.block_of({0.999999, 0.5, 1.0}, b);
+  EXPECT_EQ(b[0], 2);
+  EXPECT_EQ(b[1], 1);
+  EXPECT_EQ(b[2], 2);
+  l.block_of({-0.1, -1e-300, 1.7}, b);
+  EXPECT_EQ(b[0], 0);
+  EXPECT_EQ(b[1], 0);
+  EXPECT_EQ(b[2], 2);
+  const Vec3 c = l.centre_of({0.5, 0.2, 0.1});
+  EXPECT_DOUBLE_EQ(c.x, 0.5);
+  EXPECT_DOUBLE_EQ(c.y, 0.25);
+  EXPECT_DOUBLE_EQ(c.z, 1.0 / 6);
 }
 
 TEST(Summary, ReportsCountsAndTime)
@@ -157,8 +226,14 @@ TEST(Summary, ReportsCountsAndTime)
   t.unplaced = 2;
   t.solves = 123;
   t.max_overlap = 2.5e-13;
-  EXPECT_EQ(summary_line(t, false, 0.5),
-            "fix reinforce/invert: 10 targets, 8 relocated, 2 deleted, 0 kept, volume 0 -> 0, "
-            "max overlap 2.50e-13 rmin, 123 solves, 0.500 s\n");
-  EXPECT_NE(summary_line(t, true, 0.5).find("0 deleted, 2 kept"), std::string::npos);
+  t.displaced = 1;
+  t.pushed = 40;
+  t.max_push = 0.25;
+  t.sweeps = 300;
+  EXPECT_EQ(summary_line(t, false, 0.5, 3, 0.004),
+            "fix reinforce/invert: 10 targets, 8 relocated, 2 deleted (1 displaced by the bars), "
+            "0 kept, volume 0 -> 0, max overlap 2.50e-13 rmin, 123 solves, 40 pushed (largest "
+            "0.25 rmin, 300 sweeps), 3 rounds, 0.500 s (rmin 0.004)\n");
+  EXPECT_NE(summary_line(t, true, 0.5, 3, 1).find("0 deleted"), std::string::npos);
+  EXPECT_NE(summary_line(t, true, 0.5, 3, 1).find("2 kept"), std::string::npos);
 }

@@ -54,13 +54,11 @@ public:
   void forward_pending() override {}
   void ensure_ghost_cutoff(double reach) override { cutoff_asked = reach; }
   void restore_ghost_cutoff() override {}
-  void check_subdomain_width(double) override {}
-  Rounds rounds() override { return {}; }
   Domain placement_domain() override
   {
     Domain d;
     d.lo = {0, 0, 0};
-    d.hi = d.view_hi = {1, 1, 1};
+    d.hi = d.view_hi = d.sub_hi = {1, 1, 1};
     return d;
   }
   void move(int i, Vec3 x, double r) override
@@ -154,7 +152,8 @@ TEST(Invocation, KeepLeavesUnplacedInPlace)
   const std::size_t before = h.pos.size();
   // A radius range no void fits: nothing relocates, everything is kept.
   const Totals t = run_invocation(
-      h, parse_fix_arguments({"0", "bars", "radius", "0.3", "0.3", "unplaced", "keep"}));
+      h, parse_fix_arguments(
+             {"0", "bars", "size", "fit", "radius", "0.3", "0.3", "unplaced", "keep"}));
   EXPECT_GT(t.stats.targets, 0);
   EXPECT_EQ(t.stats.relocated, 0);
   EXPECT_EQ(t.kept, t.stats.targets);

@@ -17,6 +17,10 @@ public:
   explicit CellGrid(double cell_size);
 
   void insert(Vec3 x, int item);
+  // Removes `item`, inserted at (or last moved to) x.
+  void erase(Vec3 x, int item);
+  // Moves `item` from the cell of `from` to the cell of `to`.
+  void move(Vec3 from, Vec3 to, int item);
 
   // Calls f(item) for every item inserted in a cell that meets the box
   // [x - range, x + range]; callers test the exact distance themselves.

@@ -98,13 +98,45 @@ FixOptions parse_fix_arguments(const std::vector<std::string> &args)
       i += 2;
     } else if (key == "tol") {
       value(key, 1);
-      o.tol = positive(parse_double(args[i + 1], "tol"), "tol");
-      if (o.tol >= 1) throw OptionError(kIllegal + "tol must be < 1");
+      o.tol = parse_double(args[i + 1], "tol");
+      if (!(o.tol >= kMinTol) || o.tol >= 1)
+        throw OptionError(kIllegal + "tol must be in [1e-10, 1)");
       i += 2;
     } else if (key == "polish") {
       value(key, 1);
       o.polish = parse_int(args[i + 1], "polish");
       if (o.polish < 0 || o.polish > 10) throw OptionError(kIllegal + "polish must be in 0..10");
+      i += 2;
+    } else if (key == "size") {
+      value(key, 1);
+      if (args[i + 1] == "keep")
+        o.size = SizeMode::Keep;
+      else if (args[i + 1] == "fit")
+        o.size = SizeMode::Fit;
+      else
+        throw OptionError(kIllegal + "size must be 'keep' or 'fit', got '" + args[i + 1] + "'");
+      i += 2;
+    } else if (key == "zone") {
+      value(key, 1);
+      o.zone = parse_double(args[i + 1], "zone");
+      if (!(o.zone >= 0)) throw OptionError(kIllegal + "zone must be >= 0");
+      o.zone_set = true;
+      i += 2;
+    } else if (key == "push") {
+      value(key, 1);
+      o.push = parse_double(args[i + 1], "push");
+      if (!(o.push >= 0)) throw OptionError(kIllegal + "push must be >= 0");
+      o.push_set = true;
+      i += 2;
+    } else if (key == "displaced") {
+      value(key, 1);
+      if (args[i + 1] == "none") {
+        o.displaced = 2;    // above any volume fraction: never
+      } else {
+        o.displaced = parse_double(args[i + 1], "displaced");
+        if (!(o.displaced > 0) || o.displaced > 1)
+          throw OptionError(kIllegal + "displaced must be in (0, 1] or 'none'");
+      }
       i += 2;
     } else {
       throw OptionError(kIllegal + "unknown keyword '" + key + "'");
@@ -113,7 +145,8 @@ FixOptions parse_fix_arguments(const std::vector<std::string> &args)
   return o;
 }
 
-Settings make_settings(const FixOptions &o, double matrix_rmin, double matrix_rmax)
+Settings make_settings(const FixOptions &o, double matrix_rmin, double matrix_rmax,
+                       double box_diagonal)
 {
   Settings s;
   s.rmin = o.radius_set ? o.rmin : matrix_rmin;
@@ -123,45 +156,39 @@ Settings make_settings(const FixOptions &o, double matrix_rmin, double matrix_rm
     std::snprintf(range, sizeof range, "[%g, %g]", s.rmin, s.rmax);
     throw OptionError(std::string("Fix reinforce/invert: impossible radius range ") + range);
   }
-  s.search = o.search_set ? o.search : 2 * s.rmax;
+  // Nothing larger than the box can matter: a new sphere lies in the box,
+  // and a larger gap or push would only widen the ghost cutoff.
+  const double cap = box_diagonal > 0 && std::isfinite(box_diagonal) ? box_diagonal : s.rmax;
+  const double bound = std::max(cap, matrix_rmax);
+  s.rmax = std::min(s.rmax, bound);
+  s.rmin = std::min(s.rmin, s.rmax);
+  s.search = std::min(o.search_set ? o.search : 2 * s.rmax, bound);
+  s.zone = std::min(o.zone_set ? o.zone : 3 * s.rmax, bound);
+  s.push = std::min(o.push_set ? o.push : s.rmax, bound);
   s.tries = o.tries;
   s.choice = o.choice;
   s.tol = o.tol;
   s.newton_steps = o.polish;
+  s.size = o.size;
+  // `unplaced keep` deletes nothing: every target is tried.
+  s.displaced = o.keep_unplaced ? 2 : o.displaced;
   return s;
 }
 
-Rounds colour_rounds(const int procgrid[3], const int myloc[3], const bool periodic[3])
+std::string summary_line(const Stats &t, bool keep_unplaced, double seconds, int rounds,
+                         double rmin)
 {
-  Rounds r;
-  int stride = 1;
-  for (int d = 0; d < 3; ++d) {
-    const int p = procgrid[d], loc = myloc[d];
-    int colours = 1, colour = 0;
-    if (p > 1) {
-      const bool odd_ring = periodic[d] && p % 2 == 1;
-      colours = odd_ring ? 3 : 2;
-      // On an odd ring the last process would touch the first one of its
-      // parity: it gets a colour of its own.
-      colour = (odd_ring && loc == p - 1) ? 2 : loc % 2;
-    }
-    r.mine += colour * stride;
-    stride *= colours;
-  }
-  r.count = stride;
-  return r;
-}
-
-std::string summary_line(const Stats &t, bool keep_unplaced, double seconds)
-{
-  const long long deleted = keep_unplaced ? 0 : t.unplaced, kept = keep_unplaced ? t.unplaced : 0;
-  char buf[400];
+  const long long kept = keep_unplaced ? t.unplaced : 0;
+  const long long deleted = t.unplaced - kept;
+  char buf[600];
   std::snprintf(buf, sizeof buf,
-                "fix reinforce/invert: %lld targets, %lld relocated, %lld deleted, %lld kept, "
-                "volume %.6g -> %.6g, max overlap %.2e rmin, %lld solves, %.3f s\n",
+                "fix reinforce/invert: %lld targets, %lld relocated, %lld deleted (%lld displaced "
+                "by the bars), %lld kept, volume %.6g -> %.6g, max overlap %.2e rmin, %lld solves, "
+                "%lld pushed (largest %.2f rmin, %lld sweeps), %d rounds, %.3f s (rmin %.9g)\n",
                 static_cast<long long>(t.targets), static_cast<long long>(t.relocated), deleted,
-                kept, t.volume_before, t.volume_after, t.max_overlap,
-                static_cast<long long>(t.solves), seconds);
+                static_cast<long long>(t.displaced), kept, t.volume_before, t.volume_after,
+                t.max_overlap, static_cast<long long>(t.solves), static_cast<long long>(t.pushed),
+                t.max_push, static_cast<long long>(t.sweeps), rounds, seconds, rmin);
   return buf;
 }
 

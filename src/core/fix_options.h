@@ -29,27 +29,32 @@ struct FixOptions {
   std::string region;    // empty: no region test
   double tol = 1e-6;
   int polish = 1;
+  SizeMode size = SizeMode::Keep;
+  bool zone_set = false;    // else 3 * rmax
+  double zone = 0;
+  bool push_set = false;    // else rmax
+  double push = 0;
+  double displaced = 0.5;
 };
+
+// Smallest accepted `tol`: below it the rounding of coordinates (and of the
+// kernel's solutions, about 1e-15 of the radius) decides what overlaps.
+constexpr double kMinTol = 1e-10;
 
 // Parses the arguments that follow "fix ID group-ID reinforce/invert":
 // N rebar-group-ID keyword value ... Throws OptionError naming the problem.
 FixOptions parse_fix_arguments(const std::vector<std::string> &args);
 
 // The engine settings for one invocation, given the matrix radius range
-// found in the scene (used when the `radius` keyword was not given).
+// found in the scene (used when the `radius` keyword was not given) and the
+// box diagonal (gaps and radii beyond it cannot matter and are capped).
 // Throws OptionError for an impossible range.
-Settings make_settings(const FixOptions &o, double matrix_rmin, double matrix_rmax);
-
-// Rounds of a processor grid: two colours per dimension with more than one
-// process, three where a periodic dimension has an odd number (> 1) of them,
-// so that no two processes of one round are neighbours.
-struct Rounds {
-  int count = 1;    // number of rounds
-  int mine = 0;     // the round in which this process relocates
-};
-Rounds colour_rounds(const int procgrid[3], const int myloc[3], const bool periodic[3]);
+Settings make_settings(const FixOptions &o, double matrix_rmin, double matrix_rmax,
+                       double box_diagonal);
 
 // One log line per invocation: error against run time.
-std::string summary_line(const Stats &totals, bool keep_unplaced, double seconds);
+// rmin is the unit of the overlaps it reports.
+std::string summary_line(const Stats &totals, bool keep_unplaced, double seconds, int rounds,
+                         double rmin);
 
 }    // namespace reinforce

@@ -1,15 +1,19 @@
 #include "invocation.h"
 
+#include "schedule.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <unordered_map>
 
 namespace reinforce {
 
 namespace {
 
 // The engine's view of the atoms that can matter: those within `margin` of
-// a rebar sphere. Every atom is an obstacle; pending ones are vacant.
+// a rebar sphere. Every atom is an obstacle; pending ones are vacant; only
+// matrix atoms of the fix group are pushed.
 std::vector<Particle> make_view(const AtomArrays &a, double margin, std::vector<int> &local)
 {
   std::vector<unsigned char> rebar(a.nall);
@@ -24,6 +28,7 @@ std::vector<Particle> make_view(const AtomArrays &a, double margin, std::vector<
     p.id = a.tag[i];
     p.role = rebar[i] ? Role::Rebar : (a.pending[i] ? Role::Target : Role::Matrix);
     p.owned = i < a.nlocal;
+    p.pushable = (a.mask[i] & a.group_bit) != 0;
     view.push_back(p);
   }
   return view;
@@ -32,6 +37,66 @@ std::vector<Particle> make_view(const AtomArrays &a, double margin, std::vector<
 bool is_matrix(const AtomArrays &a, int i)
 {
   return (a.mask[i] & a.group_bit) && !(a.mask[i] & a.rebar_bit);
+}
+
+// The one copy of an atom that lies in the box (periodic images lie outside).
+bool in_box(Vec3 x, const Domain &d)
+{
+  for (int k = 0; k < 3; ++k)
+    if (d.periodic[k] && (x[k] < d.lo[k] || x[k] >= d.hi[k])) return false;
+  return true;
+}
+
+bool in_subdomain(Vec3 x, const Domain &d)
+{
+  for (int k = 0; k < 3; ++k)
+    if (x[k] < d.sub_lo[k] || x[k] >= d.sub_hi[k]) return false;
+  return true;
+}
+
+std::string format(const char *fmt, double a, double b = 0)
+{
+  char line[300];
+  std::snprintf(line, sizeof line, fmt, a, b);
+  return line;
+}
+
+// Sends every round's results to the owners of the atoms: [id, what, x, y,
+// z, r] records, what = 0 placed, 1 deleted, 2 kept, 3 pushed (x = the
+// displacement). Each owner applies those of its atoms.
+constexpr int kRecord = 6;
+void deliver(HostHooks &host, const AtomArrays &a, const std::vector<Particle> &view,
+             const std::vector<int> &local, const Relocation &rel, bool keep_unplaced,
+             std::vector<int> &doomed)
+{
+  std::vector<double> mine;
+  for (const TargetResult &t : rel.targets) {
+    const double what = t.outcome == Outcome::Placed ? 0 : (keep_unplaced ? 2 : 1);
+    mine.insert(mine.end(), {static_cast<double>(t.id), what, t.x.x, t.x.y, t.x.z, t.r});
+  }
+  for (const Push &p : rel.pushes)
+    mine.insert(mine.end(), {static_cast<double>(p.id), 3, p.dx.x, p.dx.y, p.dx.z, 0});
+  const std::vector<double> all = host.gather_all(mine);
+  if (all.empty()) return;
+  std::unordered_map<std::int64_t, int> owned;    // id -> local index of the owned atom
+  for (std::size_t k = 0; k < view.size(); ++k)
+    if (view[k].owned) owned[view[k].id] = local[k];
+  for (std::size_t k = 0; k + kRecord <= all.size(); k += kRecord) {
+    auto it = owned.find(static_cast<std::int64_t>(all[k]));
+    if (it == owned.end()) continue;
+    const int i = it->second;
+    const int what = static_cast<int>(all[k + 1]);
+    const Vec3 v{all[k + 2], all[k + 3], all[k + 4]};
+    if (what == 0) {
+      host.move(i, v, all[k + 5]);
+    } else if (what == 1) {
+      doomed.push_back(i);
+    } else if (what == 2) {
+      host.set_pending(i, false);
+    } else {
+      host.move(i, Vec3{a.x[i][0], a.x[i][1], a.x[i][2]} + v, a.radius[i]);
+    }
+  }
 }
 
 }    // namespace
@@ -48,7 +113,14 @@ std::array<double, kOutputSize> output_vector(const Totals &t)
           s.max_overlap,
           static_cast<double>(s.solves),
           t.seconds,
-          t.packing_overlaps};
+          t.packing_overlaps,
+          s.max_kept_overlap,
+          s.volume_removed,
+          static_cast<double>(s.pushed),
+          s.max_push,
+          static_cast<double>(s.sweeps),
+          static_cast<double>(s.displaced),
+          static_cast<double>(t.rounds)};
 }
 
 Totals run_invocation(HostHooks &host, const FixOptions &options)
@@ -59,78 +131,110 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
   // Radius range of the matrix and the largest sphere, over all processes.
   AtomArrays a = host.atoms();
   double matrix_rmin = INFINITY, matrix_rmax = 0, largest = 0, rebar_count = 0, matrix_count = 0;
+  double bad_matrix = 0, bad_rebar = 0;    // an id with radius 0 (or not finite)
   for (int i = 0; i < a.nlocal; ++i) {
-    largest = std::max(largest, a.radius[i]);
+    const double r = a.radius[i];
+    const bool good = r > 0 && std::isfinite(r);
+    if (good) largest = std::max(largest, r);
     if (a.mask[i] & a.rebar_bit) {
       rebar_count += 1;
+      if (!good && bad_rebar == 0) bad_rebar = static_cast<double>(a.tag[i]);
     } else if (is_matrix(a, i)) {
       matrix_count += 1;
-      matrix_rmin = std::min(matrix_rmin, a.radius[i]);
-      matrix_rmax = std::max(matrix_rmax, a.radius[i]);
+      if (!good && bad_matrix == 0) bad_matrix = static_cast<double>(a.tag[i]);
+      matrix_rmin = std::min(matrix_rmin, r);
+      matrix_rmax = std::max(matrix_rmax, r);
     }
   }
   if (host.sum(rebar_count) == 0)
     host.fail("Fix reinforce/invert rebar group '" + options.rebar_group + "' is empty");
+  bad_rebar = host.max(bad_rebar);
+  if (bad_rebar > 0)
+    host.fail(format("Fix reinforce/invert: rebar atom %.0f has radius 0; rebar spheres need "
+                     "a radius > 0",
+                     bad_rebar));
+  bad_matrix = host.max(bad_matrix);
+  if (bad_matrix > 0)
+    host.fail(format("Fix reinforce/invert: matrix atom %.0f has radius 0; matrix spheres need "
+                     "a radius > 0",
+                     bad_matrix));
   matrix_rmin = -host.max(-matrix_rmin);
   matrix_rmax = host.max(matrix_rmax);
   largest = host.max(largest);
 
   Totals totals;
+  double unit = matrix_rmin;    // of the overlaps reported: the settings' rmin
   if (host.sum(matrix_count) > 0) {    // else: no matrix sphere, nothing to relocate
+    const Domain box = host.placement_domain();
+    const double diagonal = norm(box.hi - box.lo);
     Settings settings;
     try {
-      settings = make_settings(options, matrix_rmin, matrix_rmax);
+      settings = make_settings(options, matrix_rmin, matrix_rmax, diagonal);
     } catch (const OptionError &e) {
       host.fail(e.what());
     }
-    const double reach = required_reach(settings, matrix_rmax, largest);
-    // Two same-round processes are one subdomain apart; each may place a
-    // sphere up to target_r + search + rmax beyond its own subdomain.
-    host.check_subdomain_width(2 * (matrix_rmax + settings.search + settings.rmax));
-    host.ensure_ghost_cutoff(reach);
+    unit = settings.rmin;
+    if (settings.size == SizeMode::Fit && settings.rmin == settings.rmax)
+      host.log(format("fix reinforce/invert: the radius range is the single radius %g: with "
+                      "size fit only voids of exactly that radius fit; size keep (the default) "
+                      "or the radius keyword widen it\n",
+                      settings.rmin));
+    const Footprint reach = footprint(settings, matrix_rmax, largest);
+    const BlockLattice lattice = make_block_lattice(box.lo, box.hi, box.periodic,
+                                                    reach.write + reach.read);
+    const double cutoff = lattice.half_width() + reach.read;
+    if (!std::isfinite(cutoff))
+      host.fail("Fix reinforce/invert: the reach of the relocation is not finite");
+    host.ensure_ghost_cutoff(cutoff);
+    const double margin = cutoff + largest;
 
     a = host.atoms();
     std::vector<int> local;
-    std::vector<Particle> view = make_view(a, 2 * reach, local);
-    for (std::size_t k : find_targets(view, settings.tol))
-      if (is_matrix(a, local[k])) host.set_pending(local[k], true);
-    host.forward_pending();
-    double largest_packing = 0;
-    totals.packing_overlaps = host.sum(static_cast<double>(
-        count_packing_overlaps(view, settings.tol, settings.rmin, largest_packing)));
-    totals.packing_max_overlap = host.max(largest_packing);
-    if (totals.packing_overlaps > 0) {
-      char line[200];
-      std::snprintf(line, sizeof line,
-                    "fix reinforce/invert: the packing near the bars already has %.0f overlapping "
-                    "pairs (largest %.2e rmin); they are left as they are\n",
-                    totals.packing_overlaps, totals.packing_max_overlap);
-      host.log(line);
+    std::vector<Particle> view = make_view(a, margin, local);
+    // Targets, and how many fall in each colour of the schedule.
+    std::vector<double> per_colour(lattice.rounds(), 0.0);
+    for (std::size_t k : find_targets(view, settings.tol)) {
+      if (!is_matrix(a, local[k])) continue;
+      host.set_pending(local[k], true);
+      per_colour[lattice.colour_of(view[k].x)] += 1;
+    }
+    double any = 0;
+    for (double &n : per_colour) any += n = host.sum(n);
+    if (any > 0) {
+      host.forward_pending();
+      a = host.atoms();
+      view = make_view(a, margin, local);
+      double largest_packing = 0;
+      totals.packing_overlaps = host.sum(static_cast<double>(
+          count_packing_overlaps(view, settings.tol, settings.rmin, largest_packing)));
+      totals.packing_max_overlap = host.max(largest_packing);
+      if (totals.packing_overlaps > 0)
+        host.log(format("fix reinforce/invert: the packing near the bars already has %.0f "
+                        "overlapping pairs (largest %.2e rmin); they are left as they are\n",
+                        totals.packing_overlaps, totals.packing_max_overlap));
     }
 
-    const Rounds rounds = host.rounds();
     const Domain domain = host.placement_domain();
-    for (int round = 0; round < rounds.count; ++round) {
-      if (round == rounds.mine) {
+    bool fresh_view = true;
+    for (int colour = 0; colour < lattice.rounds(); ++colour) {
+      if (per_colour[colour] == 0) continue;
+      if (!fresh_view) {    // the previous round moved and deleted atoms
+        host.refresh();
         a = host.atoms();
-        view = make_view(a, 2 * reach, local);
-        const std::vector<Placement> placements =
-            relocate_targets(view, settings, domain, options.keep_unplaced, totals.stats);
-        std::vector<int> doomed;
-        for (const Placement &p : placements) {
-          const int i = local[p.index];
-          if (p.placed) {
-            host.move(i, p.x, p.r);
-          } else if (options.keep_unplaced) {
-            host.set_pending(i, false);
-          } else {
-            doomed.push_back(i);
-          }
-        }
-        host.remove(doomed);
+        view = make_view(a, margin, local);
       }
-      // The next round's processes must see this round's spheres.
-      if (rounds.count > 1) host.refresh();
+      fresh_view = false;
+      totals.rounds++;
+      // Each target is relocated by the process that owns its block's centre.
+      auto mine = [&](const Particle &p) {
+        return in_box(p.x, domain) && lattice.colour_of(p.x) == colour &&
+               in_subdomain(lattice.centre_of(p.x), domain);
+      };
+      const Relocation rel =
+          relocate_targets(view, settings, domain, options.keep_unplaced, totals.stats, mine);
+      std::vector<int> doomed;
+      deliver(host, a, view, local, rel, options.keep_unplaced, doomed);
+      host.remove(doomed);
     }
     host.restore_ghost_cutoff();
   }
@@ -139,14 +243,20 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
   s.targets = static_cast<std::int64_t>(host.sum(static_cast<double>(s.targets)));
   s.relocated = static_cast<std::int64_t>(host.sum(static_cast<double>(s.relocated)));
   s.unplaced = static_cast<std::int64_t>(host.sum(static_cast<double>(s.unplaced)));
+  s.displaced = static_cast<std::int64_t>(host.sum(static_cast<double>(s.displaced)));
   s.solves = static_cast<std::int64_t>(host.sum(static_cast<double>(s.solves)));
+  s.pushed = static_cast<std::int64_t>(host.sum(static_cast<double>(s.pushed)));
+  s.sweeps = static_cast<std::int64_t>(host.sum(static_cast<double>(s.sweeps)));
   s.volume_before = host.sum(s.volume_before);
   s.volume_after = host.sum(s.volume_after);
+  s.volume_removed = host.sum(s.volume_removed);
   s.max_overlap = host.max(s.max_overlap);
+  s.max_kept_overlap = host.max(s.max_kept_overlap);
+  s.max_push = host.max(s.max_push);
   totals.deleted = options.keep_unplaced ? 0 : static_cast<double>(s.unplaced);
   totals.kept = options.keep_unplaced ? static_cast<double>(s.unplaced) : 0;
   totals.seconds = host.max(host.wall_time() - start);
-  host.log(summary_line(s, options.keep_unplaced, totals.seconds));
+  host.log(summary_line(s, options.keep_unplaced, totals.seconds, totals.rounds, unit));
   return totals;
 }
 

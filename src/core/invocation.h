@@ -1,6 +1,6 @@
 // One invocation of fix reinforce/invert, shared by the LAMMPS and LIGGGHTS
 // adapters: they implement HostHooks with their own atoms and communication,
-// and run_invocation does the rest (DESIGN.md sections 4 and 5).
+// and run_invocation does the rest (docs/design.md).
 #pragma once
 
 #include "fix_options.h"
@@ -40,12 +40,7 @@ public:
   // names the value needed); restore_ghost_cutoff undoes a raise.
   virtual void ensure_ghost_cutoff(double reach) = 0;
   virtual void restore_ghost_cutoff() = 0;
-  // Stops with an error when same-round processes could place spheres in one
-  // neighbourhood: a subdomain thinner than `width` in a dimension split over
-  // three or more processes (with two, the two are never in one round).
-  virtual void check_subdomain_width(double width) = 0;
-
-  virtual Rounds rounds() = 0;
+  // The box, its periodicity, this process's subdomain and view, the region.
   virtual Domain placement_domain() = 0;
 
   // New centre and radius for an owned atom (the host keeps the density and
@@ -84,20 +79,27 @@ struct Totals {
   Stats stats;
   double deleted = 0, kept = 0;
   double seconds = 0;
+  int rounds = 0;    // rounds of the schedule that had work
   // Matrix spheres near the bars that already overlapped each other before
   // the relocation (left as they are; reported, not hidden).
   double packing_overlaps = 0, packing_max_overlap = 0;
 };
 
-// The fix's global vector, f_ID[1] to f_ID[10]: targets, relocated,
+// The fix's global vector, f_ID[1] to f_ID[17]: targets, relocated,
 // deleted, kept, volume of the targets before, volume of the relocated
-// spheres after, largest residual overlap / rmin, kernel solves, wall time
-// (s), pairs of matrix spheres near the bars that already overlapped.
-constexpr int kOutputSize = 10;
+// spheres after, largest residual overlap of a relocated or pushed sphere /
+// rmin, kernel solves, wall time (s), pairs of matrix spheres near the bars
+// that already overlapped, largest overlap of a kept target with a matrix
+// sphere / rmin, matrix volume removed, spheres pushed, largest push /
+// rmin, rearrangement sweeps, targets deleted as displaced by the bars,
+// rounds of the schedule that had work.
+constexpr int kOutputSize = 17;
 std::array<double, kOutputSize> output_vector(const Totals &t);
 
-// Runs one invocation: radius range, ghost reach, targets, rounds of
-// relocation with a refresh after each, deletions, totals and the log line.
+// Runs one invocation: radius range, ghost reach, targets, the rounds of
+// the block schedule (a refresh before each round that has work), the
+// results delivered to the atoms' owners, deletions, totals and the log
+// line. Collective: every process calls it.
 Totals run_invocation(HostHooks &host, const FixOptions &options);
 
 }    // namespace reinforce

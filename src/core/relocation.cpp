@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <unordered_map>
 
 namespace reinforce {
@@ -13,9 +14,33 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// Rearrangement bounds (docs/design.md, "Making room"): sweeps over the
+// pushed spheres, and voids tried per target before it counts as unplaced.
+constexpr int kMaxSweeps = 60;
+constexpr int kMaxAttempts = 6;
+constexpr std::size_t kMaxPushed = 48;
+
 double ball_volume(double r)
 {
   return 4.0 / 3.0 * kPi * r * r * r;
+}
+
+// Fixed sample points of the unit ball (a cubic lattice, 9 per axis, 389
+// points): the volume fraction of a target inside the bars to about 1 %.
+const std::vector<Vec3> &unit_ball_points()
+{
+  static const std::vector<Vec3> points = [] {
+    std::vector<Vec3> p;
+    const int n = 9;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        for (int k = 0; k < n; ++k) {
+          const Vec3 u{(2 * i + 1.0) / n - 1, (2 * j + 1.0) / n - 1, (2 * k + 1.0) / n - 1};
+          if (norm2(u) <= 1) p.push_back(u);
+        }
+    return p;
+  }();
+  return points;
 }
 
 struct Candidate {
@@ -30,63 +55,27 @@ struct Candidate {
   }
 };
 
-// The spheres a process sees while it relocates: the particles, then the
-// relocated spheres and their periodic images as they are added.
-class View {
-public:
-  View(const std::vector<Particle> &particles, double cell) : grid_(cell)
-  {
-    for (const Particle &p : particles) add(p.x, p.r, p.id, p.role != Role::Target);
+// A fixed order of spheres that does not depend on where they sit in a
+// process's view: by id, then position (periodic images of one atom).
+bool same_order_everywhere(std::int64_t ida, Vec3 a, std::int64_t idb, Vec3 b)
+{
+  if (ida != idb) return ida < idb;
+  if (a.x != b.x) return a.x < b.x;
+  if (a.y != b.y) return a.y < b.y;
+  return a.z < b.z;
+}
+
+// The smallest n with C(n, 4) >= tries: the colex enumeration of the first
+// `tries` groups of four uses only the n nearest candidates.
+std::size_t candidates_needed(int tries)
+{
+  double groups = 0;
+  std::size_t n = 4;
+  for (;; ++n) {
+    groups = static_cast<double>(n) * (n - 1) * (n - 2) * (n - 3) / 24;
+    if (groups >= tries) return n;
   }
-
-  int add(Vec3 x, double r, std::int64_t id, bool present)
-  {
-    const int index = static_cast<int>(x_.size());
-    x_.push_back(x);
-    r_.push_back(r);
-    id_.push_back(id);
-    present_.push_back(present);
-    grid_.insert(x, index);
-    return index;
-  }
-
-  // True when sphere (c, r) overlaps no present sphere by more than
-  // tol * min of the two radii; `deepest` gets its largest overlap (length).
-  bool fits(Vec3 c, double r, double largest_r, double tol, double &deepest) const
-  {
-    bool ok = true;
-    deepest = 0;
-    grid_.for_each_near(c, r + largest_r, [&](int j) {
-      if (!ok || !present_[j]) return;
-      const double overlap = r + r_[j] - norm(c - x_[j]);
-      deepest = std::max(deepest, overlap);
-      ok = overlap <= tol * std::min(r, r_[j]);
-    });
-    return ok;
-  }
-
-  std::vector<Candidate> candidates(Vec3 x, double r, double search, double largest_r) const
-  {
-    std::vector<Candidate> out;
-    grid_.for_each_near(x, r + search + largest_r, [&](int j) {
-      if (!present_[j]) return;
-      const double gap = norm(x_[j] - x) - r_[j] - r;
-      if (gap <= search) out.push_back({gap, id_[j], j});
-    });
-    std::sort(out.begin(), out.end());
-    return out;
-  }
-
-  Sphere sphere(int j) const { return {x_[j], r_[j]}; }
-  void set_present(int j) { present_[j] = true; }
-
-private:
-  CellGrid grid_;
-  std::vector<Vec3> x_;
-  std::vector<double> r_;
-  std::vector<std::int64_t> id_;
-  std::vector<bool> present_;
-};
+}
 
 // Calls f(a, b, c, d) for the groups of four of [0, n) in colex order (all
 // groups of the k nearest before any group using the (k+1)-th), at most
@@ -102,12 +91,456 @@ template <class F> void for_each_group(int n, int limit, F &&f)
         }
 }
 
+Vec3 wrapped(Vec3 c, const Domain &domain)
+{
+  for (int d = 0; d < 3; ++d) {
+    if (!domain.periodic[d]) continue;
+    const double period = domain.hi[d] - domain.lo[d];
+    c[d] -= period * std::floor((c[d] - domain.lo[d]) / period);
+    if (c[d] >= domain.hi[d]) c[d] = domain.lo[d];    // rounding at the top edge
+  }
+  return c;
+}
+
+// Inside the walls (non-periodic dimensions) with radius r, and the
+// region, if any, holds the wrapped centre.
 bool admissible(Vec3 c, double r, const Domain &domain)
 {
   for (int d = 0; d < 3; ++d)
     if (!domain.periodic[d] && (c[d] - r < domain.lo[d] || c[d] + r > domain.hi[d])) return false;
-  return !domain.region || domain.region(c);
+  return !domain.region || domain.region(wrapped(c, domain));
 }
+
+// The spheres a process sees while it relocates: the particles, then the
+// relocated spheres and their periodic images as they are added. Present
+// spheres can be pushed; every copy of an atom moves with it.
+class Scene {
+public:
+  Scene(const std::vector<Particle> &particles, double cell, double zone)
+      : grid_(cell), largest_r_(0)
+  {
+    for (const Particle &p : particles) largest_r_ = std::max(largest_r_, p.r);
+    for (const Particle &p : particles)
+      add(p.x, p.r, p.id, p.role != Role::Target, p.role == Role::Matrix && p.pushable,
+          p.role == Role::Rebar);
+    // Only matrix spheres within `zone` of a bar may be pushed.
+    for (std::size_t i = 0; i < x_.size(); ++i)
+      if (pushable_[i]) pushable_[i] = gap_to_rebar(x_[i], r_[i], zone) <= zone;
+  }
+
+  int add(Vec3 x, double r, std::int64_t id, bool present, bool pushable, bool rebar = false)
+  {
+    const int index = static_cast<int>(x_.size());
+    x_.push_back(x);
+    r_.push_back(r);
+    id_.push_back(id);
+    present_.push_back(present);
+    pushable_.push_back(pushable);
+    rebar_.push_back(rebar);
+    grid_.insert(x, index);
+    if (present) copies_[id].push_back(index);
+    largest_r_ = std::max(largest_r_, r);
+    return index;
+  }
+
+  // Takes a sphere out of the view (a failed attempt's new sphere).
+  void remove(int j)
+  {
+    grid_.erase(x_[j], j);
+    present_[j] = false;
+    std::vector<int> &c = copies_[id_[j]];
+    c.erase(std::remove(c.begin(), c.end(), j), c.end());
+  }
+
+  void set_present(int j, bool pushable)
+  {
+    present_[j] = true;
+    pushable_[j] = pushable;
+    copies_[id_[j]].push_back(j);
+  }
+
+  // Moves every present copy of sphere j's atom by dx.
+  void shift(int j, Vec3 dx)
+  {
+    for (int c : copies_[id_[j]]) place(c, x_[c] + dx);
+  }
+  void place(int j, Vec3 x)
+  {
+    grid_.move(x_[j], x, j);
+    x_[j] = x;
+  }
+
+  // Smallest surface gap from sphere (x, r) to a rebar sphere, searched out
+  // to `range` (beyond it: +infinity).
+  double gap_to_rebar(Vec3 x, double r, double range) const
+  {
+    double best = INFINITY;
+    grid_.for_each_near(x, r + range + largest_r_, [&](int b) {
+      if (rebar_[b]) best = std::min(best, norm(x_[b] - x) - r_[b] - r);
+    });
+    return best;
+  }
+
+  // Volume fraction of sphere (x, r) inside the union of the rebar spheres.
+  double fraction_in_rebar(Vec3 x, double r) const
+  {
+    std::vector<int> bars;
+    grid_.for_each_near(x, r + largest_r_, [&](int b) {
+      if (rebar_[b] && norm(x_[b] - x) < r + r_[b]) bars.push_back(b);
+    });
+    if (bars.empty()) return 0;
+    const std::vector<Vec3> &points = unit_ball_points();
+    std::size_t inside = 0;
+    for (const Vec3 &u : points) {
+      const Vec3 p = x + r * u;
+      for (int b : bars)
+        if (norm2(p - x_[b]) < r_[b] * r_[b]) {
+          ++inside;
+          break;
+        }
+    }
+    return static_cast<double>(inside) / points.size();
+  }
+
+  // True when sphere (c, r) overlaps no present sphere by more than
+  // tol * min of the two radii; `deepest` gets its largest overlap (length).
+  bool fits(Vec3 c, double r, double tol, double &deepest, int skip_id = -1) const
+  {
+    bool ok = true;
+    deepest = 0;
+    grid_.for_each_near(c, r + largest_r_, [&](int j) {
+      if (!ok || !present_[j] || id_[j] == skip_id) return;
+      const double overlap = r + r_[j] - norm(c - x_[j]);
+      deepest = std::max(deepest, overlap);
+      ok = overlap <= tol * std::min(r, r_[j]);
+    });
+    return ok;
+  }
+
+  // Largest overlap (length) of sphere j with a present sphere of another
+  // atom; with matrix_only, rebar spheres are left out.
+  double deepest_overlap(int j, bool matrix_only = false) const
+  {
+    double deepest = 0;
+    grid_.for_each_near(x_[j], r_[j] + largest_r_, [&](int k) {
+      if (!present_[k] || id_[k] == id_[j] || (matrix_only && rebar_[k])) return;
+      deepest = std::max(deepest, r_[j] + r_[k] - norm(x_[j] - x_[k]));
+    });
+    return deepest;
+  }
+
+  // Present spheres whose surface gap to sphere (x, r) is at most `search`,
+  // nearest first: at least the `wanted` nearest (all of them when fewer lie
+  // within `search`). The query grows until it holds them, so its cost
+  // follows the spheres found, not the gap asked.
+  std::vector<Candidate> candidates(Vec3 x, double r, double search, std::size_t wanted) const
+  {
+    double range = r + 2 * largest_r_;
+    for (;;) {
+      const double complete = std::min(search, range - r - largest_r_);
+      std::vector<Candidate> out;
+      grid_.for_each_near(x, range, [&](int j) {
+        if (!present_[j]) return;
+        const double gap = norm(x_[j] - x) - r_[j] - r;
+        if (gap <= complete) out.push_back({gap, id_[j], j});
+      });
+      if (out.size() >= wanted || complete >= search) {
+        std::sort(out.begin(), out.end());
+        return out;
+      }
+      range *= 2;
+    }
+  }
+
+  // Present spheres overlapping sphere j by more than `limit` of the
+  // smaller radius, in the same order on every process.
+  std::vector<int> overlapping(int j, double limit) const
+  {
+    std::vector<int> out;
+    grid_.for_each_near(x_[j], r_[j] + largest_r_, [&](int k) {
+      if (k == j || !present_[k] || id_[k] == id_[j]) return;
+      if (r_[j] + r_[k] - norm(x_[j] - x_[k]) > limit * std::min(r_[j], r_[k])) out.push_back(k);
+    });
+    std::sort(out.begin(), out.end(), [&](int a, int b) {
+      return same_order_everywhere(id_[a], x_[a], id_[b], x_[b]);
+    });
+    return out;
+  }
+
+  Sphere sphere(int j) const { return {x_[j], r_[j]}; }
+  Vec3 x(int j) const { return x_[j]; }
+  double r(int j) const { return r_[j]; }
+  std::int64_t id(int j) const { return id_[j]; }
+  bool pushable(int j) const { return pushable_[j]; }
+  const std::vector<int> &copies(std::int64_t id) { return copies_[id]; }
+
+private:
+  CellGrid grid_;
+  double largest_r_;
+  std::vector<Vec3> x_;
+  std::vector<double> r_;
+  std::vector<std::int64_t> id_;
+  std::vector<bool> present_, pushable_, rebar_;
+  std::unordered_map<std::int64_t, std::vector<int>> copies_;    // present copies by id
+};
+
+// A place for a target: the centre of a sphere tangent to four present
+// spheres that overlaps none (a void), with that sphere's radius.
+struct Void {
+  Vec3 c;
+  double r;
+  double score;    // lower is better
+};
+
+// One target's relocation, given the scene and the settings.
+class Relocator {
+public:
+  Relocator(Scene &scene, const Settings &s, const Domain &domain, Stats &stats)
+      : scene_(scene), s_(s), domain_(domain), stats_(stats)
+  {
+  }
+
+  // Spheres placed or moved so far (indices; repeats allowed).
+  std::vector<int> touched;
+
+  // Places the target at index t, or returns -1. On success the index of the
+  // new sphere's primary copy.
+  int relocate(int t, std::map<std::int64_t, Vec3> &pushes)
+  {
+    const Vec3 x0 = scene_.x(t);
+    const double r0 = scene_.r(t);
+    const std::int64_t id = scene_.id(t);
+    if (s_.size == SizeMode::Fit) {
+      Void v;
+      if (!best_fit(x0, r0, v)) return -1;
+      return commit(scene_.add(v.c, v.r, id, true, true));
+    }
+    std::vector<Void> voids = find_voids(x0, r0);
+    for (const Void &v : voids) {
+      const int fresh = make_room(v.c, x0, r0, id, pushes);
+      if (fresh >= 0) return commit(fresh);
+    }
+    return -1;
+  }
+
+private:
+  Scene &scene_;
+  const Settings &s_;
+  const Domain &domain_;
+  Stats &stats_;
+
+  // Runs the kernel over the groups of four nearest candidates of the
+  // target's old sphere; calls take(solution) for each solution whose
+  // radius lies in (0, rho_max] and whose centre is within the shift bound;
+  // stops when take returns true.
+  template <class F> void for_each_solution(Vec3 x0, double r0, double rho_max, F &&take)
+  {
+    const std::vector<Candidate> near =
+        scene_.candidates(x0, r0, s_.search, candidates_needed(s_.tries));
+    const double max_shift = r0 + s_.search;
+    for_each_group(static_cast<int>(near.size()), s_.tries, [&](int a, int b, int c, int d) {
+      const Sphere group[4] = {scene_.sphere(near[a].index), scene_.sphere(near[b].index),
+                               scene_.sphere(near[c].index), scene_.sphere(near[d].index)};
+      // Two spheres whose gap exceeds 2 rho_max share no tangent sphere of
+      // radius rho_max or less: skip the solve.
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j)
+          if (norm(group[i].c - group[j].c) - group[i].r - group[j].r > 2 * rho_max) return false;
+      Sphere found[2];
+      const int nfound = tangent_spheres_inversion(group, found, s_.newton_steps);
+      stats_.solves++;
+      for (int k = 0; k < nfound; ++k) {
+        const Sphere &sol = found[k];
+        if (!(sol.r > 0) || sol.r > rho_max || norm(sol.c - x0) > max_shift) continue;
+        if (take(sol)) return true;
+      }
+      return false;
+    });
+  }
+
+  // The seed paper's placement: a tangent sphere with its radius in
+  // [rmin, rmax] that overlaps nothing; first found or closest in radius.
+  bool best_fit(Vec3 x0, double r0, Void &best)
+  {
+    bool found = false;
+    best.score = INFINITY;
+    for_each_solution(x0, r0, s_.rmax, [&](const Sphere &sol) {
+      if (sol.r < s_.rmin || !admissible(sol.c, sol.r, domain_)) return false;
+      const double score = s_.choice == Choice::Closest ? std::fabs(sol.r - r0) : 0.0;
+      double deepest;
+      if (score >= best.score || !scene_.fits(sol.c, sol.r, s_.tol, deepest)) return false;
+      best = {sol.c, sol.r, score};
+      found = true;
+      return s_.choice == Choice::First;
+    });
+    return found;
+  }
+
+  // Voids near the target, best first: for `choose closest` the ones whose
+  // radius is closest to the target's, for `choose first` in the order the
+  // groups were tried. At most kMaxAttempts, distinct.
+  std::vector<Void> find_voids(Vec3 x0, double r0)
+  {
+    std::vector<Void> voids;
+    const double rho_max = std::max(r0, s_.rmax);
+    int order = 0;
+    for_each_solution(x0, r0, rho_max, [&](const Sphere &sol) {
+      if (!admissible(sol.c, std::min(sol.r, r0), domain_)) return false;
+      const double score = s_.choice == Choice::Closest ? std::fabs(sol.r - r0) : order;
+      if (voids.size() == kMaxAttempts && score >= voids.back().score) return false;
+      for (const Void &v : voids)
+        if (norm(v.c - sol.c) <= 1e-9 * r0) return false;
+      double deepest;
+      if (!scene_.fits(sol.c, sol.r, s_.tol, deepest)) return false;
+      ++order;
+      const Void v{sol.c, sol.r, score};
+      voids.insert(std::upper_bound(voids.begin(), voids.end(), v,
+                                    [](const Void &a, const Void &b) { return a.score < b.score; }),
+                   v);
+      if (voids.size() > kMaxAttempts) voids.pop_back();
+      return false;
+    });
+    return voids;
+  }
+
+  // Puts a sphere of the target's radius r0 at c and pushes overlapping
+  // spheres apart along their line of centres until no pair involving a
+  // moved sphere overlaps by more than tol / 2 (collective rearrangement,
+  // Jodrey-Tory style). Rebar, atoms outside the fix group, kept targets
+  // and matrix spheres farther than `zone` from the bars never move; no
+  // pushed sphere moves more than `push`; the new sphere stays within
+  // r0 + search of the target's old centre x0. On failure everything is
+  // put back and -1 returned.
+  int make_room(Vec3 c, Vec3 x0, double r0, std::int64_t id, std::map<std::int64_t, Vec3> &pushes)
+  {
+    const int fresh = scene_.add(c, r0, id, true, true);
+    const double reach = r0 + 2 * s_.rmax;    // pushed spheres start this close to c
+    const double limit = 0.5 * s_.tol, gap = 0.5 * s_.tol;
+    std::map<int, Vec3> start;                        // index -> position before (for undo)
+    std::map<std::int64_t, Vec3> moved;               // id -> displacement in this attempt
+    auto origin = [&](int j) {
+      auto it = start.find(j);
+      return it == start.end() ? scene_.x(j) : it->second;
+    };
+    // With a region, only spheres inside it are pushed, and they stay in it.
+    auto in_region = [&](Vec3 x) { return !domain_.region || domain_.region(wrapped(x, domain_)); };
+    auto movable = [&](int j) {
+      return j == fresh ||
+             (scene_.pushable(j) && norm(origin(j) - c) <= reach && in_region(origin(j)));
+    };
+    auto shift = [&](int j, Vec3 dx) {
+      for (int k : scene_.copies(scene_.id(j)))
+        if (!start.count(k)) start[k] = scene_.x(k);
+      scene_.shift(j, dx);
+      Vec3 &m = moved[scene_.id(j)];
+      m = m + dx;
+    };
+    auto undo = [&]() {
+      for (const auto &[k, x] : start) scene_.place(k, x);
+      scene_.remove(fresh);
+      return -1;
+    };
+
+    std::vector<int> active{fresh};
+    int sweep = 0;
+    for (;; ++sweep) {
+      if (sweep == kMaxSweeps) {
+        stats_.sweeps += sweep;
+        return undo();
+      }
+      std::vector<int> next;
+      for (int i : active) {
+        for (int j : scene_.overlapping(i, limit)) {
+          const double ri = scene_.r(i), rj = scene_.r(j);
+          Vec3 n = scene_.x(j) - scene_.x(i);
+          const double dist = norm(n);
+          const double depth = ri + rj - dist;
+          if (!(depth > limit * std::min(ri, rj))) continue;    // an earlier push resolved it
+          const bool mi = movable(i), mj = movable(j);
+          if (!mi && !mj) {
+            stats_.sweeps += sweep + 1;
+            return undo();
+          }
+          n = dist > 0 ? (1 / dist) * n : Vec3{1, 0, 0};
+          const double amount = depth + gap * std::min(ri, rj);
+          const double vi = ri * ri * ri, vj = rj * rj * rj;
+          const double share_i = mi ? (mj ? vj / (vi + vj) : 1.0) : 0.0;
+          if (share_i > 0) shift(i, -(share_i * amount) * n);
+          if (share_i < 1) shift(j, ((1 - share_i) * amount) * n);
+          if (mi) next.push_back(i);
+          if (share_i < 1) next.push_back(j);
+        }
+      }
+      // Walls: a moved sphere goes back inside the box.
+      for (int i : next)
+        for (int d = 0; d < 3; ++d) {
+          if (domain_.periodic[d]) continue;
+          const double r = scene_.r(i), x = scene_.x(i)[d];
+          Vec3 dx;
+          if (x - r < domain_.lo[d]) dx[d] = domain_.lo[d] + r * (1 + gap) - x;
+          if (x + r > domain_.hi[d]) dx[d] = domain_.hi[d] - r * (1 + gap) - x;
+          if (dx[d] != 0) shift(i, dx);
+        }
+      if (next.empty()) break;
+      // Bounds: how far and how many.
+      for (const auto &[mid, dx] : moved)
+        if (mid != id && norm(dx) > s_.push) {
+          stats_.sweeps += sweep + 1;
+          return undo();
+        }
+      if (moved.size() > kMaxPushed + 1) {
+        stats_.sweeps += sweep + 1;
+        return undo();
+      }
+      std::sort(next.begin(), next.end(), [&](int a, int b) {
+        return same_order_everywhere(scene_.id(a), scene_.x(a), scene_.id(b), scene_.x(b));
+      });
+      next.erase(std::unique(next.begin(), next.end()), next.end());
+      active.swap(next);
+    }
+    stats_.sweeps += sweep + 1;
+    const Vec3 final_c = scene_.x(fresh);
+    if (norm(final_c - x0) > r0 + s_.search || !admissible(final_c, r0, domain_)) return undo();
+    for (const auto &[k, before] : start)
+      if (!in_region(scene_.x(k))) {
+        (void)before;
+        return undo();
+      }
+    // Accepted: what moved is checked once more at the end, and the pushes.
+    for (const auto &entry : start) touched.push_back(entry.first);
+    for (const auto &[mid, dx] : moved) {
+      if (mid == id) continue;
+      stats_.pushed++;
+      stats_.max_push = std::max(stats_.max_push, norm(dx) / s_.rmin);
+      Vec3 &p = pushes[mid];
+      p = p + dx;
+    }
+    return fresh;
+  }
+
+  // The new sphere is present for the targets after it, with its periodic
+  // images inside this view (the host would make ghosts of them).
+  int commit(int fresh)
+  {
+    const Vec3 c = scene_.x(fresh);
+    const double r = scene_.r(fresh);
+    touched.push_back(fresh);
+    for (int i = -1; i <= 1; ++i)
+      for (int j = -1; j <= 1; ++j)
+        for (int k = -1; k <= 1; ++k) {
+          const int shift[3] = {i, j, k};
+          Vec3 image = c;
+          bool skip = (i == 0 && j == 0 && k == 0);
+          for (int d = 0; d < 3 && !skip; ++d) {
+            skip = shift[d] != 0 && !domain_.periodic[d];
+            image[d] += shift[d] * (domain_.hi[d] - domain_.lo[d]);
+            skip = skip || image[d] < domain_.view_lo[d] || image[d] > domain_.view_hi[d];
+          }
+          if (!skip) touched.push_back(scene_.add(image, r, scene_.id(fresh), true, true));
+        }
+    return fresh;
+  }
+};
 
 }    // namespace
 
@@ -116,17 +549,34 @@ void Stats::add(const Stats &o)
   targets += o.targets;
   relocated += o.relocated;
   unplaced += o.unplaced;
+  displaced += o.displaced;
   volume_before += o.volume_before;
   volume_after += o.volume_after;
+  volume_removed += o.volume_removed;
   max_overlap = std::max(max_overlap, o.max_overlap);
+  max_kept_overlap = std::max(max_kept_overlap, o.max_kept_overlap);
   solves += o.solves;
+  pushed += o.pushed;
+  max_push = std::max(max_push, o.max_push);
+  sweeps += o.sweeps;
 }
 
-double required_reach(const Settings &s, double target_rmax, double largest_r)
+Footprint footprint(const Settings &s, double target_rmax, double largest_r)
 {
-  // A new centre stays within target_r + search of the old one, and must be
-  // checked against every sphere within rmax + largest_r of it.
-  return target_rmax + s.search + s.rmax + largest_r;
+  Footprint f;
+  // A new centre stays within target_r + search of the old one.
+  const double placed = target_rmax + s.search;
+  if (s.size == SizeMode::Fit) {
+    f.write = placed;
+    f.read = placed + s.rmax + largest_r;
+    return f;
+  }
+  // Pushed spheres start within target_r + 2 rmax of the new centre and
+  // move at most `push`; whether one may move depends on the bars within
+  // `zone` of it.
+  f.write = placed + target_rmax + 2 * s.rmax + s.push;
+  f.read = f.write + std::max(s.rmax + largest_r, s.zone + s.rmax + largest_r);
+  return f;
 }
 
 bool spheres_overlap(Vec3 a, double ra, Vec3 b, double rb, double tol)
@@ -152,7 +602,8 @@ std::vector<int> spheres_near_rebar(int n, const double *const *x, const double 
   }
   std::vector<int> out;
   if (rebar.empty()) return out;
-  // One query box spans at most two cells per dimension.
+  // Cells as wide as the query reach, so one query spans at most two cells
+  // per dimension however thin the rebar.
   const double range = margin + any_r + rebar_r;
   CellGrid grid(2 * range);
   for (int i : rebar) grid.insert({x[i][0], x[i][1], x[i][2]}, i);
@@ -180,11 +631,13 @@ std::vector<int> spheres_near_rebar(int n, const double *const *x, const double 
 std::vector<std::size_t> find_targets(const std::vector<Particle> &particles, double tol)
 {
   std::vector<std::size_t> out;
-  double rebar_r = 0;
+  double rebar_r = 0, other_r = 0;
   for (const Particle &p : particles)
-    if (p.role == Role::Rebar) rebar_r = std::max(rebar_r, p.r);
+    (p.role == Role::Rebar ? rebar_r : other_r) = std::max(p.role == Role::Rebar ? rebar_r : other_r, p.r);
   if (!(rebar_r > 0)) return out;
-  CellGrid grid(2 * rebar_r);
+  // Cells sized by the query (matrix radius + rebar radius), not by the
+  // rebar alone: thin fibres would make each query span many cells.
+  CellGrid grid(rebar_r + other_r);
   for (std::size_t i = 0; i < particles.size(); ++i)
     if (particles[i].role == Role::Rebar) grid.insert(particles[i].x, static_cast<int>(i));
   for (std::size_t i = 0; i < particles.size(); ++i) {
@@ -204,7 +657,8 @@ std::int64_t count_packing_overlaps(const std::vector<Particle> &particles, doub
 {
   largest = 0;
   double r_max = 0;
-  for (const Particle &p : particles) r_max = std::max(r_max, p.r);
+  for (const Particle &p : particles)
+    if (p.role != Role::Rebar) r_max = std::max(r_max, p.r);
   if (!(r_max > 0)) return 0;
   CellGrid grid(2 * r_max);
   for (std::size_t i = 0; i < particles.size(); ++i)
@@ -228,92 +682,76 @@ std::int64_t count_packing_overlaps(const std::vector<Particle> &particles, doub
   return pairs;
 }
 
-std::vector<Placement> relocate_targets(const std::vector<Particle> &particles,
-                                        const Settings &settings, const Domain &domain,
-                                        bool keep_unplaced, Stats &stats)
+Relocation relocate_targets(const std::vector<Particle> &particles, const Settings &settings,
+                            const Domain &domain, bool keep_unplaced, Stats &stats,
+                            const std::function<bool(const Particle &)> &mine)
 {
+  Relocation out;
   std::vector<std::size_t> targets;
-  std::unordered_map<std::int64_t, std::vector<int>> copies;    // vacant atoms by id
+  std::unordered_map<std::int64_t, std::vector<int>> vacant;    // target copies by id
   double largest_r = settings.rmax;
   for (std::size_t i = 0; i < particles.size(); ++i) {
     const Particle &p = particles[i];
     largest_r = std::max(largest_r, p.r);
     if (p.role != Role::Target) continue;
-    copies[p.id].push_back(static_cast<int>(i));
-    if (p.owned) targets.push_back(i);
+    vacant[p.id].push_back(static_cast<int>(i));
+    if (mine ? mine(p) : p.owned) targets.push_back(i);
   }
-  std::vector<Placement> placements;
-  if (targets.empty()) return placements;
+  if (targets.empty()) return out;
   std::sort(targets.begin(), targets.end(), [&](std::size_t a, std::size_t b) {
-    return particles[a].id != particles[b].id ? particles[a].id < particles[b].id : a < b;
+    return same_order_everywhere(particles[a].id, particles[a].x, particles[b].id, particles[b].x);
   });
 
-  View view(particles, 2 * largest_r);
-  Vec3 period;
-  for (int d = 0; d < 3; ++d) period[d] = domain.hi[d] - domain.lo[d];
-
+  Scene scene(particles, 2 * largest_r, settings.zone);
+  Relocator relocator(scene, settings, domain, stats);
+  std::map<std::int64_t, Vec3> pushes;
+  std::vector<int> placed_at;    // the new sphere's index, per placed result
   for (std::size_t t : targets) {
     const Particle &target = particles[t];
     stats.targets++;
     stats.volume_before += ball_volume(target.r);
-
-    const std::vector<Candidate> near =
-        view.candidates(target.x, target.r, settings.search, largest_r);
-    const double max_shift = target.r + settings.search;
-    Placement best;
-    best.index = t;
-    double best_score = INFINITY, best_overlap = 0;
-
-    for_each_group(static_cast<int>(near.size()), settings.tries, [&](int a, int b, int c, int d) {
-      const Sphere group[4] = {view.sphere(near[a].index), view.sphere(near[b].index),
-                               view.sphere(near[c].index), view.sphere(near[d].index)};
-      Sphere found[2];
-      const int nfound = tangent_spheres_inversion(group, found, settings.newton_steps);
-      stats.solves++;
-      for (int k = 0; k < nfound; ++k) {
-        const Sphere &s = found[k];
-        if (s.r < settings.rmin || s.r > settings.rmax) continue;
-        if (norm(s.c - target.x) > max_shift || !admissible(s.c, s.r, domain)) continue;
-        const double score = settings.choice == Choice::Closest ? std::fabs(s.r - target.r) : 0.0;
-        if (score >= best_score) continue;
-        double deepest;
-        if (!view.fits(s.c, s.r, largest_r, settings.tol, deepest)) continue;
-        best.placed = true;
-        best.x = s.c;
-        best.r = s.r;
-        best_score = score;
-        best_overlap = deepest / settings.rmin;
-      }
-      return best.placed && settings.choice == Choice::First;
-    });
-
-    if (best.placed) {
+    TargetResult result;
+    result.index = t;
+    result.id = target.id;
+    int fresh = -1;
+    if (settings.displaced <= 1 && scene.fraction_in_rebar(target.x, target.r) >= settings.displaced) {
+      result.outcome = Outcome::Displaced;
+      stats.displaced++;
+    } else {
+      fresh = relocator.relocate(static_cast<int>(t), pushes);
+      result.outcome = fresh >= 0 ? Outcome::Placed : Outcome::Unplaced;
+    }
+    if (result.outcome == Outcome::Placed) {
       stats.relocated++;
-      stats.volume_after += ball_volume(best.r);
-      stats.max_overlap = std::max(stats.max_overlap, best_overlap);
-      view.add(best.x, best.r, target.id, true);
-      // Periodic images the host would make ghosts of, inside this view.
-      for (int i = -1; i <= 1; ++i)
-        for (int j = -1; j <= 1; ++j)
-          for (int k = -1; k <= 1; ++k) {
-            const int shift[3] = {i, j, k};
-            Vec3 image = best.x;
-            bool skip = (i == 0 && j == 0 && k == 0);
-            for (int dim = 0; dim < 3 && !skip; ++dim) {
-              skip = shift[dim] != 0 && !domain.periodic[dim];
-              image[dim] += shift[dim] * period[dim];
-              skip = skip || image[dim] < domain.view_lo[dim] || image[dim] > domain.view_hi[dim];
-            }
-            if (!skip) view.add(image, best.r, target.id, true);
-          }
+      stats.volume_after += ball_volume(scene.r(fresh));
     } else {
       stats.unplaced++;
-      if (keep_unplaced)
-        for (int copy : copies[target.id]) view.set_present(copy);
+      if (keep_unplaced && result.outcome == Outcome::Unplaced) {
+        // Present from now on, never pushed; what it overlaps is reported.
+        for (int copy : vacant[target.id]) scene.set_present(copy, false);
+        stats.max_kept_overlap =
+            std::max(stats.max_kept_overlap, scene.deepest_overlap(static_cast<int>(t), true) /
+                                                 settings.rmin);
+      } else {
+        stats.volume_removed += ball_volume(target.r);
+      }
     }
-    placements.push_back(best);
+    out.targets.push_back(result);
+    placed_at.push_back(fresh);
   }
-  return placements;
+  // The largest overlap left by what was placed or moved, after every push.
+  for (int j : relocator.touched) {
+    stats.max_overlap = std::max(stats.max_overlap, scene.deepest_overlap(j) / settings.rmin);
+  }
+  // Final places: a relocated sphere may have been pushed by later ones.
+  for (std::size_t k = 0; k < out.targets.size(); ++k) {
+    if (placed_at[k] < 0) continue;
+    out.targets[k].x = scene.x(placed_at[k]);
+    out.targets[k].r = scene.r(placed_at[k]);
+    pushes.erase(out.targets[k].id);
+  }
+  for (const auto &[id, dx] : pushes) out.pushes.push_back({id, dx});
+  return out;
 }
 
 }    // namespace reinforce

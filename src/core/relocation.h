@@ -1,6 +1,7 @@
 // The relocation engine: one process's view of the spheres near the bars,
-// relocation of the targets it owns. Host independent: the LAMMPS and
-// LIGGGHTS fixes translate their atoms into this view and back.
+// relocation of the targets it is given. Host independent: the LAMMPS and
+// LIGGGHTS fixes translate their atoms into this view and back
+// (docs/design.md, "The relocation engine").
 #pragma once
 
 #include "vec3.h"
@@ -25,17 +26,29 @@ struct Particle {
   std::int64_t id = 0;
   Role role = Role::Matrix;
   bool owned = false;
+  // A present matrix sphere that rearrangement may push: in the fix group,
+  // not a kept target. Atoms outside the fix group are obstacles only.
+  bool pushable = true;
 };
 
 enum class Choice { First, Closest };
 
+// How a target is put back: with its own radius, making room where the
+// void is too small (Keep, the default), or with the radius of the void it
+// fits, within [rmin, rmax], as in the seed paper (Fit).
+enum class SizeMode { Keep, Fit };
+
 struct Settings {
-  double rmin = 0, rmax = 0;    // accepted radius range of a relocated sphere
+  double rmin = 0, rmax = 0;    // accepted radius range (Fit); largest matrix radius (reach)
   double search = 0;            // surface gap of candidate neighbours (> 0)
   int tries = 1000;             // groups of four tried per target, at most
   Choice choice = Choice::Closest;
   double tol = 1e-6;       // spheres overlap when d_ij > tol * min(r_i, r_j)
   int newton_steps = 1;    // Newton polish of each kernel solution
+  SizeMode size = SizeMode::Keep;
+  double zone = 0;         // Keep: only matrix spheres within this gap of a bar are pushed
+  double push = 0;         // Keep: largest displacement of a pushed sphere
+  double displaced = 0.5;  // a target with at least this volume fraction inside the bars is deleted
 };
 
 // Placement domain of one process.
@@ -46,38 +59,41 @@ struct Domain {
   // ghost cutoff): a periodic image of a new sphere is added to the view
   // when its centre falls inside, as the host's own ghost images would be.
   Vec3 view_lo, view_hi;
-  std::function<bool(const Vec3 &)> region;    // optional extra test on a new centre
+  Vec3 sub_lo, sub_hi;    // this process's subdomain, [sub_lo, sub_hi)
+  std::function<bool(const Vec3 &)> region;    // optional extra test on a new (wrapped) centre
 };
 
-struct Placement {
-  std::size_t index = 0;    // the target, an index into the particle vector
-  bool placed = false;      // false: no relocation was found
-  Vec3 x;                   // new centre (may lie outside the box in periodic dims)
-  double r = 0;             // new radius
+// How far the relocation of one target reaches from the target's old centre:
+// `write` bounds the centres of the spheres it moves or places (before and
+// after), `read` the centres of every sphere it looks at. The ghost cutoff
+// and the width of the blocks of the schedule follow from these.
+struct Footprint {
+  double write = 0, read = 0;
 };
+Footprint footprint(const Settings &s, double target_rmax, double largest_r);
 
 // Totals of one relocation call (the host sums them over processes and rounds).
 struct Stats {
   std::int64_t targets = 0, relocated = 0, unplaced = 0;
+  std::int64_t displaced = 0;    // deleted without search: mostly inside the bars
   double volume_before = 0, volume_after = 0;
-  double max_overlap = 0;     // largest overlap of a relocated sphere, relative to rmin
-  std::int64_t solves = 0;    // kernel calls
+  double volume_removed = 0;    // volume of the targets not put back (deleted or kept)
+  double max_overlap = 0;       // largest overlap of a relocated or pushed sphere, / rmin
+  double max_kept_overlap = 0;  // largest overlap of a kept target with a present sphere, / rmin
+  std::int64_t solves = 0;      // kernel calls
+  std::int64_t pushed = 0;      // spheres pushed (counted once per target that pushed them)
+  double max_push = 0;          // largest displacement of a pushed sphere, / rmin
+  std::int64_t sweeps = 0;      // rearrangement sweeps
   void add(const Stats &o);
 };
-
-// Distance from a target's old centre to the farthest sphere centre that can
-// decide its relocation: the ghost cutoff a process needs. target_rmax is the
-// largest target radius, largest_r the largest radius of any sphere.
-double required_reach(const Settings &s, double target_rmax, double largest_r);
 
 // True when spheres (a, ra) and (b, rb) overlap by more than tol * min(ra, rb).
 bool spheres_overlap(Vec3 a, double ra, Vec3 b, double rb, double tol);
 
 // Indices (ascending) of the spheres in [0, n) whose surface comes within
 // `margin` of a rebar sphere's surface, rebar spheres included. x[i] points
-// at three doubles (the hosts' double **x). Cost: O(n) with a grid over the
-// rebar spheres only. These are all the spheres a relocation can involve
-// when margin >= 2 * required_reach.
+// at three doubles (the hosts' double **x). Cost: O(n) plus the work near
+// the rebar, whatever the rebar radius.
 std::vector<int> spheres_near_rebar(int n, const double *const *x, const double *radius,
                                     const unsigned char *is_rebar, double margin);
 
@@ -90,13 +106,33 @@ std::vector<std::size_t> find_targets(const std::vector<Particle> &particles, do
 std::int64_t count_packing_overlaps(const std::vector<Particle> &particles, double tol, double rmin,
                                     double &largest);
 
-// Relocates every owned Target of `particles`, in increasing id order, and
-// returns one Placement per such target in that order. Particles with role
-// Target (owned or not) are vacant; all others are present. A relocated
-// sphere is present for the targets after it. With keep_unplaced, a target
-// that found no place stays where it is and is present for the later ones.
-std::vector<Placement> relocate_targets(const std::vector<Particle> &particles,
-                                        const Settings &settings, const Domain &domain,
-                                        bool keep_unplaced, Stats &stats);
+// What became of one target.
+enum class Outcome { Placed, Displaced, Unplaced };
+struct TargetResult {
+  std::size_t index = 0;    // the target's copy in the particle vector
+  std::int64_t id = 0;
+  Outcome outcome = Outcome::Unplaced;
+  Vec3 x;          // Placed: final centre (the frame of the target's copy; may lie outside
+                   // the box in periodic dims)
+  double r = 0;    // Placed: final radius
+};
+// The accumulated displacement of a present sphere pushed to make room.
+struct Push {
+  std::int64_t id = 0;
+  Vec3 dx;
+};
+struct Relocation {
+  std::vector<TargetResult> targets;    // in the order they were relocated (increasing id)
+  std::vector<Push> pushes;             // increasing id; none of the targets above
+};
+
+// Relocates the Target particles for which `mine` is true (default: the
+// owned ones), in increasing id order. Particles with role Target are
+// vacant, all others present. A relocated sphere is present for the targets
+// after it. With keep_unplaced, a target that found no place stays where it
+// is, present and never pushed.
+Relocation relocate_targets(const std::vector<Particle> &particles, const Settings &settings,
+                            const Domain &domain, bool keep_unplaced, Stats &stats,
+                            const std::function<bool(const Particle &)> &mine = nullptr);
 
 }    // namespace reinforce

@@ -46,8 +46,6 @@ using namespace FixConst;
 
 namespace {
 
-const char *const kDimName[3] = {"x", "y", "z"};
-
 // Marks of the per-atom pending flag.
 constexpr int kPresent = 0;    // not waiting (rebar, matrix, relocated, kept)
 constexpr int kPending = 1;    // a target waiting for its new place
@@ -230,36 +228,6 @@ public:
   }
 #endif
 
-  // Two processes of one round lie at least one subdomain apart, in a
-  // dimension where they differ. That only happens where the dimension has
-  // more processes than colours (a dimension with 2 processes, or 3 around a
-  // periodic ring, gives every process its own colour there).
-  void check_subdomain_width(double width) override
-  {
-    for (int d = 0; d < 3; ++d) {
-      const int p = f.comm->procgrid[d];
-      if (p <= 1) continue;
-      const int colours = (f.domain->periodicity[d] && p % 2 == 1) ? 3 : 2;
-      if (p <= colours) continue;
-      double thin = f.domain->subhi[d] - f.domain->sublo[d], thinnest = 0;
-      MPI_Allreduce(&thin, &thinnest, 1, MPI_DOUBLE, MPI_MIN, f.world);
-      if (thinnest < width)
-        fail("Fix reinforce/invert: subdomains " + format_length(thinnest) + " thick in " +
-             kDimName[d] +
-             " are thinner than 2*(target rmax + search + rmax) = " + format_length(width) +
-             ": processes relocating in one round could place spheres in one neighbourhood; "
-             "use fewer processes in " +
-             kDimName[d] + " (processors command) or a smaller search gap");
-    }
-  }
-
-  reinforce::Rounds rounds() override
-  {
-    const bool periodic[3] = {f.domain->periodicity[0] != 0, f.domain->periodicity[1] != 0,
-                              f.domain->periodicity[2] != 0};
-    return reinforce::colour_rounds(f.comm->procgrid, f.comm->myloc, periodic);
-  }
-
   reinforce::Domain placement_domain() override
   {
     reinforce::Domain d;
@@ -269,6 +237,8 @@ public:
       d.periodic[k] = f.domain->periodicity[k] != 0;
       d.view_lo[k] = f.domain->sublo[k] - f.comm->cutghost[k];
       d.view_hi[k] = f.domain->subhi[k] + f.comm->cutghost[k];
+      d.sub_lo[k] = f.domain->sublo[k];
+      d.sub_hi[k] = f.domain->subhi[k];
     }
     if (Region *region = f.region)
       d.region = [region](const reinforce::Vec3 &x) { return region->match(x.x, x.y, x.z) != 0; };

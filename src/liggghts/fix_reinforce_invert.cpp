@@ -8,6 +8,7 @@
 #include "fix_multisphere.h"
 #include "group.h"
 #include "memory.h"
+#include "neighbor.h"
 #include "modify.h"
 #include "region.h"
 #include "update.h"
@@ -246,12 +247,26 @@ void FixReinforceInvert::forward_pending()
   comm->forward_comm_fix(this);
 }
 
+// LIGGGHTS's granular optimisation (Comm::use_gran_opt, inline in comm_I.h,
+// on for every orthogonal box whose atoms have a radius) acquires ghosts
+// only within half the ghost cutoff plus half the skin.
+bool FixReinforceInvert::granular_ghosts()
+{
+  return domain->triclinic == 0 && atom->radius != nullptr;
+}
+
+// How far ghost atoms reach beyond the subdomain in dimension d.
+double FixReinforceInvert::ghost_reach(int d)
+{
+  return granular_ghosts() ? 0.5 * (comm->cutghost[d] + neighbor->skin) : comm->cutghost[d];
+}
+
 void FixReinforceInvert::ensure_ghost_cutoff(double reach)
 {
-  const double have = std::min({comm->cutghost[0], comm->cutghost[1], comm->cutghost[2]});
+  const double have = std::min({ghost_reach(0), ghost_reach(1), ghost_reach(2)});
   if (have >= reach) return;
   user_cutghost_ = comm->cutghostuser;
-  comm->cutghostuser = reach;
+  comm->cutghostuser = granular_ghosts() ? 2 * reach : reach;
   refresh();
   char line[200];
   std::snprintf(line, sizeof line,
@@ -268,30 +283,6 @@ void FixReinforceInvert::restore_ghost_cutoff()
   comm->setup();
 }
 
-void FixReinforceInvert::check_subdomain_width(double width)
-{
-  static const char axis[] = "xyz";
-  for (int d = 0; d < 3; ++d) {
-    if (comm->procgrid[d] < 3) continue;    // with two, neighbours are never in one round
-    const double thinnest = -max(-(domain->subhi[d] - domain->sublo[d]));
-    if (thinnest < width) {
-      char line[300];
-      std::snprintf(line, sizeof line,
-                    "Fix reinforce/invert needs subdomains at least %g thick along %c, found %g: "
-                    "use fewer processes along %c (processors command)",
-                    width, axis[d], thinnest, axis[d]);
-      fail(line);
-    }
-  }
-}
-
-reinforce::Rounds FixReinforceInvert::rounds()
-{
-  const bool periodic[3] = {domain->periodicity[0] != 0, domain->periodicity[1] != 0,
-                            domain->periodicity[2] != 0};
-  return reinforce::colour_rounds(comm->procgrid, comm->myloc, periodic);
-}
-
 reinforce::Domain FixReinforceInvert::placement_domain()
 {
   reinforce::Domain d;
@@ -299,8 +290,10 @@ reinforce::Domain FixReinforceInvert::placement_domain()
     d.lo[k] = domain->boxlo[k];
     d.hi[k] = domain->boxhi[k];
     d.periodic[k] = domain->periodicity[k] != 0;
-    d.view_lo[k] = domain->sublo[k] - comm->cutghost[k];
-    d.view_hi[k] = domain->subhi[k] + comm->cutghost[k];
+    d.view_lo[k] = domain->sublo[k] - ghost_reach(k);
+    d.view_hi[k] = domain->subhi[k] + ghost_reach(k);
+    d.sub_lo[k] = domain->sublo[k];
+    d.sub_hi[k] = domain->subhi[k];
   }
   if (region_) {
     Region *region = region_;

@@ -54,9 +54,9 @@ private:
   void set_pending(int local, bool pending) override;
   void forward_pending() override;
   void ensure_ghost_cutoff(double reach) override;
+  double ghost_reach(int d);
+  bool granular_ghosts();
   void restore_ghost_cutoff() override;
-  void check_subdomain_width(double width) override;
-  reinforce::Rounds rounds() override;
   reinforce::Domain placement_domain() override;
   void move(int local, reinforce::Vec3 x, double r) override;
   void remove(std::vector<int> &locals) override;

@@ -30,7 +30,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     if (o.radius_set && !(o.rmin > 0 && o.rmin <= o.rmax && std::isfinite(o.rmax)))
       __builtin_trap();
     if (o.search_set && !(o.search > 0 && std::isfinite(o.search))) __builtin_trap();
-    const Settings s = make_settings(o, 0.5, 1.0);
+    const Settings s = make_settings(o, 0.5, 1.0, 10.0);
     if (!(s.search > 0) || !(s.rmin > 0) || s.rmax < s.rmin) __builtin_trap();
   } catch (const OptionError &) {
   }

@@ -9,8 +9,9 @@
 # Checked, on the written result:
 #  * the checker (no overlap above tol, radii, walls, atom conservation with
 #    the deleted count the fix reports, rebar untouched), and its counts
-#    against the fix's: spheres moved = relocated, targets left on a bar =
-#    kept (unless SCENE_KEPT_ANY=1: atoms outside the fix group may be left
+#    against the fix's: targets moved = relocated, other spheres moved <=
+#    pushed (PUSHED line, f_ID[13]; none moved without it), targets left on
+#    a bar = kept (unless SCENE_KEPT_ANY=1: atoms outside the fix group may be left
 #    on a bar too);
 #  * targets = relocated + deleted + kept, one summary line in the log;
 #  * moved spheres keep their density (mass scaled with the volume), when
@@ -22,6 +23,7 @@
 # Optional lines the input may print, checked when present:
 #   print "STATS f1 ... f8 f10"     printed (the stability tests match it)
 #   print "ATOMS $(atoms)"          LAMMPS's atom count = atoms in after.dump
+#   print "PUSHED f13"              spheres pushed to make room (f_ID[13])
 #   print "ONCE f1 f2 f3 f4"        after a second run with the same N = 0 fix:
 #                                   same totals, no second summary line
 #   print "AGAIN t r d k atoms"     a fresh fix afterwards: its targets are
@@ -78,15 +80,24 @@ last STATS "$log"
 
 "$checker" --before "$work/a/before.dump" --after "$work/a/after.dump" --deleted "$deleted" \
   "${check_args[@]}" | tee "$work/check" || fail "the checker failed (above)"
-read -r moved ckept < <(awk '/^SUMMARY/ {
-    for (i = 1; i < NF; i++) { if ($i == "moved") m = $(i + 1); if ($i == "kept") k = $(i + 1) }
-    print m, k }' "$work/check")
-[ "$moved" = "$relocated" ] || fail "the checker sees $moved spheres moved, the fix reports $relocated relocated"
+summary_field() { awk -v k="$1" '/^SUMMARY/ {for (i = 1; i < NF; i++) if ($i == k) print $(i + 1)}' "$work/check"; }
+moved=$(summary_field moved_targets) pushed_seen=$(summary_field moved_others) ckept=$(summary_field kept)
+[ "$moved" = "$relocated" ] || fail "the checker sees $moved targets moved, the fix reports $relocated relocated"
+# Spheres pushed to make room: f_ID[13] counts each once per round that
+# pushed it, so it bounds the distinct spheres the checker sees moved.
+pushed=$(last PUSHED "$log")
+if [ -n "$pushed" ]; then
+  awk -v s="$pushed_seen" -v f="${pushed#PUSHED }" 'BEGIN {exit !(s + 0 <= f + 0 && (f + 0 == 0) == (s + 0 == 0))}' ||
+    fail "the checker sees $pushed_seen other spheres moved, the fix reports ${pushed#PUSHED } pushed"
+  echo "PASS: other spheres moved ($pushed_seen) <= pushed (${pushed#PUSHED })"
+elif [ "$pushed_seen" != 0 ]; then
+  fail "the checker sees $pushed_seen spheres moved that were not targets (no PUSHED line)"
+fi
 if [ "${SCENE_KEPT_ANY:-0}" != 1 ]; then
   [ "$ckept" = "$kept" ] || fail "the checker sees $ckept targets left on a bar, the fix reports $kept kept"
-  echo "PASS: moved = relocated ($moved), left on a bar = kept ($kept)"
+  echo "PASS: targets moved = relocated ($moved), left on a bar = kept ($kept)"
 else
-  echo "PASS: moved = relocated ($moved); $ckept matrix spheres left on a bar, $kept of them kept targets"
+  echo "PASS: targets moved = relocated ($moved); $ckept matrix spheres left on a bar, $kept of them kept targets"
 fi
 # unplaced keep: how far relocated spheres overlap the kept targets (the
 # checker allows it with --kept-ok, and reports it), against the fix's
@@ -105,7 +116,9 @@ fi
 # The fix's reported volumes and residual overlap against the dumps, and the
 # mass of each moved sphere (scaled with its volume: same density).
 stats=$(last STATS "$log")
-awk -v stats="$stats" -v kept="$kept" -v check="$(grep '^SUMMARY' "$work/check")" '
+# The fix states its rmin (the unit of f_ID[7]) at the end of its summary line.
+fix_rmin=$(grep '^fix reinforce/invert: [0-9]' "$log" | tail -1 | sed -nE 's/.*\(rmin ([^)]*)\)$/\1/p')
+awk -v stats="$stats" -v kept="$kept" -v fix_rmin="${fix_rmin:-0}" -v check="$(grep '^SUMMARY' "$work/check")" '
   function vol(r) { return 4.188790204786391 * r * r * r }    # 4 pi / 3 r^3
   function rel(a, b,   d, m) { d = a - b; if (d < 0) d = -d; m = (a < 0 ? -a : a); if ((b < 0 ? -b : b) > m) m = (b < 0 ? -b : b); return m > 0 ? d / m : 0 }
   FNR == 1 { file++ }
@@ -117,7 +130,7 @@ awk -v stats="$stats" -v kept="$kept" -v check="$(grep '^SUMMARY' "$work/check")
   {
     id = $c["id"]; seen[id] = 1
     if ($c["x"] " " $c["y"] " " $c["z"] " " $c["radius"] == key[id]) next
-    moved++; v6 += vol($c["radius"]); v5 += vol(r[id])
+    moved++
     if (("mass" in c) && m[id] != "") {
       e = rel($c["mass"] / vol($c["radius"]), m[id] / vol(r[id]))
       if (e > 1e-12) { bad_mass++; if (bad_mass <= 3) print "atom " id ": density " m[id] / vol(r[id]) " -> " $c["mass"] / vol($c["radius"]) }
@@ -125,7 +138,11 @@ awk -v stats="$stats" -v kept="$kept" -v check="$(grep '^SUMMARY' "$work/check")
     }
   }
   END {
-    for (id in type) if (type[id] != 2 && !(id in seen)) v5 += vol(r[id])    # deleted targets
+    n = split(check, w, " ")
+    for (i = 1; i < n; i++) {
+      if (w[i] == "volume_targets_before") v5 = w[i + 1]
+      if (w[i] == "volume_relocated_after") v6 = w[i + 1]
+    }
     fail = 0
     if (bad_mass) { print "FAIL: " bad_mass " moved spheres changed their density (mass not scaled with the volume)"; fail = 1 }
     else if (masses) print "PASS: " masses " moved spheres kept their density"
@@ -133,8 +150,12 @@ awk -v stats="$stats" -v kept="$kept" -v check="$(grep '^SUMMARY' "$work/check")
       if (rel(f[7], v6) > 1e-9) { print "FAIL: f_ID[6] = " f[7] ", the relocated spheres written hold " v6; fail = 1 }
       else if (kept == 0 && rel(f[6], v5) > 1e-9) { print "FAIL: f_ID[5] = " f[6] ", the targets (moved or deleted) held " v5; fail = 1 }
       else print "PASS: f_ID[5], f_ID[6] = the volumes of the dumps" (kept == 0 ? "" : " (f_ID[6] only: targets kept)")
-      n = split(check, w, " ")
-      for (i = 1; i < n; i++) if (w[i] == "max_overlap_moved") written = w[i + 1]
+      for (i = 1; i < n; i++) {
+        if (w[i] == "max_overlap_moved") written = w[i + 1]
+        if (w[i] == "rmin") { checker_rmin = w[i + 1]; sub(/\)$/, "", checker_rmin) }
+      }
+      # Both in the fix'"'"'s unit (its rmin may differ from the checker'"'"'s).
+      if (written != "" && fix_rmin + 0 > 0 && checker_rmin + 0 > 0) written = written * checker_rmin / fix_rmin
       if (kept == 0 && written != "") {
         # f_ID[7] is honest: no moved sphere written overlaps more than it says
         # (1% for the checker'"'"'s 3 digits and an rmin of the checker'"'"'s).

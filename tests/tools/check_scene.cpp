@@ -472,6 +472,34 @@ int run_check(Options o)
   for (const Atom &b : before.atoms)
     if (!after.find(b.id)) ++deleted;
 
+  // Targets of before: matrix spheres overlapping a rebar sphere. Moved ones
+  // were relocated; other moved spheres were pushed to make room.
+  std::vector<char> was_target(before.atoms.size(), 0);
+  for_each_contact(before, [&](std::size_t i, std::size_t j, double ov) {
+    const Atom &a = before.atoms[i], &b = before.atoms[j];
+    if ((a.type == rebar) == (b.type == rebar) || ov <= o.tol * std::min(a.r, b.r)) return;
+    was_target[a.type == rebar ? j : i] = 1;
+  });
+  long moved_targets = 0, moved_others = 0;
+  double volume_targets_before = 0, volume_relocated_after = 0;
+  auto ball = [](double r) { return 4.0 / 3.0 * 3.14159265358979323846 * r * r * r; };
+  for (std::size_t k = 0; k < before.atoms.size(); ++k)
+    if (was_target[k] && !after.find(before.atoms[k].id))
+      volume_targets_before += ball(before.atoms[k].r);    // deleted
+  for (std::size_t i = 0; i < after.atoms.size(); ++i) {
+    if (!moved[i]) continue;
+    const Atom &a = after.atoms[i];
+    const Atom *b = before.find(a.id);
+    const bool target = b && was_target[static_cast<std::size_t>(b - before.atoms.data())];
+    if (target) {
+      ++moved_targets;
+      volume_targets_before += ball(b->r);
+      volume_relocated_after += ball(a.r);
+    } else {
+      ++moved_others;
+    }
+  }
+
   // Kept targets: matrix spheres left in place that overlap a bar.
   std::vector<char> kept(after.atoms.size(), 0);
   long kept_count = 0;
@@ -626,9 +654,11 @@ int run_check(Options o)
   }
   std::printf("SUMMARY atoms_before %ld atoms_after %ld moved %ld deleted %ld kept %ld "
               "max_overlap_moved %.3g max_overlap_all %.3g max_overlap_packing %.3g "
-              "max_overlap_kept %.3g (overlaps / rmin %.6g)\n",
+              "max_overlap_kept %.3g moved_targets %ld moved_others %ld "
+              "volume_targets_before %.17g volume_relocated_after %.17g (overlaps / rmin %.6g)\n",
               nb, na, moved_count, deleted, kept_count, worst_moved, worst_all, worst_packing,
-              worst_moved_kept, rmin);
+              worst_moved_kept, moved_targets, moved_others, volume_targets_before,
+              volume_relocated_after, rmin);
   return failures ? 1 : 0;
 }
 
