@@ -9,11 +9,17 @@
 # vacuous). Spheres pushed to make room are checked like any moved sphere.
 #   last_invocation.sh CHECKER BEFORE AFTER "SUMMARY LINE" [checker args]
 # SUMMARY LINE: the fix's log line of that invocation,
-#   fix reinforce/invert: T targets, R relocated, D deleted, K kept, ...
+#   fix reinforce/invert: T targets, R relocated, D deleted (...), K kept, ...
 set -euo pipefail
 checker=$1 before=$2 after=$3 line=$4
 shift 4
-read -r targets relocated deleted kept < <(awk '{print $3, $5, $7, $9}' <<<"$line")
+read -r targets relocated deleted kept < <(awk '{
+    for (i = 2; i <= NF; i++) {
+      w = $i; sub(/,$/, "", w)
+      if (w == "targets") t = $(i - 1); if (w == "relocated") r = $(i - 1)
+      if (w == "deleted") d = $(i - 1); if (w == "kept") k = $(i - 1)
+    }
+    print t, r, d, k }' <<<"$line")
 echo "last invocation: $targets targets, $relocated relocated, $deleted deleted, $kept kept"
 [ "$relocated" -gt 0 ] || { echo "FAIL: nothing relocated at the last invocation: the check would test nothing"; exit 1; }
 out=$("$checker" --before "$before" --after "$after" --deleted "$deleted" "$@") ||
