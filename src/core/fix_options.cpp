@@ -130,6 +130,7 @@ FixOptions parse_fix_arguments(const std::vector<std::string> &args)
       i += 2;
     } else if (key == "displaced") {
       value(key, 1);
+      o.displaced_set = true;
       if (args[i + 1] == "none") {
         o.displaced = 2;    // above any volume fraction: never
       } else {
@@ -170,8 +171,9 @@ Settings make_settings(const FixOptions &o, double matrix_rmin, double matrix_rm
   s.tol = o.tol;
   s.newton_steps = o.polish;
   s.size = o.size;
-  // `unplaced keep` deletes nothing: every target is tried.
-  s.displaced = o.keep_unplaced ? 2 : o.displaced;
+  // `unplaced keep` deletes nothing: every target is tried. size fit (the
+  // seed paper) tries every target unless told otherwise.
+  s.displaced = o.keep_unplaced ? 2 : (o.displaced_set || o.size == SizeMode::Keep ? o.displaced : 2);
   return s;
 }
 

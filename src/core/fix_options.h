@@ -29,11 +29,12 @@ struct FixOptions {
   std::string region;    // empty: no region test
   double tol = 1e-6;
   int polish = 1;
-  SizeMode size = SizeMode::Keep;
+  SizeMode size = SizeMode::Fit;
   bool zone_set = false;    // else 3 * rmax
   double zone = 0;
   bool push_set = false;    // else rmax
   double push = 0;
+  bool displaced_set = false;    // else 0.5 with size keep, never with size fit
   double displaced = 0.5;
 };
 

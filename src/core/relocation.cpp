@@ -16,8 +16,8 @@ constexpr double kPi = 3.14159265358979323846;
 
 // Rearrangement bounds (docs/design.md, "Making room"): sweeps over the
 // pushed spheres, and voids tried per target before it counts as unplaced.
-constexpr int kMaxSweeps = 60;
-constexpr int kMaxAttempts = 6;
+constexpr int kMaxSweeps = 40;
+constexpr int kMaxAttempts = 2;
 constexpr std::size_t kMaxPushed = 48;
 
 double ball_volume(double r)
@@ -315,12 +315,20 @@ public:
       if (!best_fit(x0, r0, v)) return -1;
       return commit(scene_.add(v.c, v.r, id, true, true));
     }
+    // First its own place: pushed out of the bars, its neighbours pushed
+    // on (it was part of the packing, so that disturbs least); then the
+    // voids the inversion finds nearby.
+    const int in_place = make_room(x0, x0, r0, id, pushes);
+    if (in_place >= 0) return commit(in_place);
     std::vector<Void> voids = find_voids(x0, r0);
     for (const Void &v : voids) {
       const int fresh = make_room(v.c, x0, r0, id, pushes);
       if (fresh >= 0) return commit(fresh);
     }
-    return -1;
+    // Jammed around it: the seed paper's placement, in the void it fits.
+    Void v;
+    if (!best_fit(x0, r0, v)) return -1;
+    return commit(scene_.add(v.c, v.r, id, true, true));
   }
 
 private:
@@ -511,7 +519,6 @@ private:
     for (const auto &[mid, dx] : moved) {
       if (mid == id) continue;
       stats_.pushed++;
-      stats_.max_push = std::max(stats_.max_push, norm(dx) / s_.rmin);
       Vec3 &p = pushes[mid];
       p = p + dx;
     }
@@ -750,7 +757,10 @@ Relocation relocate_targets(const std::vector<Particle> &particles, const Settin
     out.targets[k].r = scene.r(placed_at[k]);
     pushes.erase(out.targets[k].id);
   }
-  for (const auto &[id, dx] : pushes) out.pushes.push_back({id, dx});
+  for (const auto &[id, dx] : pushes) {
+    out.pushes.push_back({id, dx});
+    stats.max_push = std::max(stats.max_push, norm(dx) / settings.rmin);
+  }
   return out;
 }
 

@@ -33,9 +33,10 @@ struct Particle {
 
 enum class Choice { First, Closest };
 
-// How a target is put back: with its own radius, making room where the
-// void is too small (Keep, the default), or with the radius of the void it
-// fits, within [rmin, rmax], as in the seed paper (Fit).
+// How a target is put back: with the radius of the void it fits, within
+// [rmin, rmax], as in the seed paper (Fit, the default), or with its own
+// radius, making room where the void is too small (Keep; where that fails,
+// as Fit).
 enum class SizeMode { Keep, Fit };
 
 struct Settings {
@@ -45,7 +46,7 @@ struct Settings {
   Choice choice = Choice::Closest;
   double tol = 1e-6;       // spheres overlap when d_ij > tol * min(r_i, r_j)
   int newton_steps = 1;    // Newton polish of each kernel solution
-  SizeMode size = SizeMode::Keep;
+  SizeMode size = SizeMode::Fit;
   double zone = 0;         // Keep: only matrix spheres within this gap of a bar are pushed
   double push = 0;         // Keep: largest displacement of a pushed sphere
   double displaced = 0.5;  // a target with at least this volume fraction inside the bars is deleted
@@ -82,7 +83,7 @@ struct Stats {
   double max_kept_overlap = 0;  // largest overlap of a kept target with a present sphere, / rmin
   std::int64_t solves = 0;      // kernel calls
   std::int64_t pushed = 0;      // spheres pushed (counted once per target that pushed them)
-  double max_push = 0;          // largest displacement of a pushed sphere, / rmin
+  double max_push = 0;          // largest displacement of a pushed sphere in one call, / rmin
   std::int64_t sweeps = 0;      // rearrangement sweeps
   void add(const Stats &o);
 };
