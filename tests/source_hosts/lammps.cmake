@@ -106,7 +106,7 @@ src_error(unknown_keyword 1 "${I}unknown keyword 'foo'" "${F} 0 bars foo 1")
 src_error(missing_value 1 "${I}missing value for keyword 'tries'" "${F} 0 bars tries")
 src_error(rmin_above_rmax 1 "${I}radius rmin must be <= rmax" "${F} 0 bars radius 0.3 0.1")
 src_error(search_overflow 1 "${I}expected a number for search, got '1e400'" "${F} 0 bars search 1e400")
-src_error(tol_one 1 "${I}tol must be < 1" "${F} 0 bars tol 1")
+src_error(tol_one 1 "${I}tol must be in [1e-10, 1)" "${F} 0 bars tol 1")
 src_error(every_fraction 1 "${I}expected an integer for N, got '1.5'" "${F} 1.5 bars")
 src_error(rebar_group_missing 1 "${R}rebar group 'nosuch' does not exist" "${F} 0 nosuch")
 src_error(rebar_group_same 1 "${R}rebar group must differ from the fix group" "fix r bars reinforce/invert 0 bars")
@@ -125,10 +125,8 @@ src_error(triclinic_box 1 "${R}does not support triclinic boxes" "${F} 0 bars" -
 src_error(comm_style_tiled 2 "${R}requires comm_style brick" "${F} 0 bars" -var commstyle tiled)
 src_error(comm_mode_multi 1 "${R}requires comm_modify mode single" "${F} 0 bars"
           -var commmode multi -var neigh multi)
-src_error(impossible_radius_range 1 "Fix reinforce/invert: impossible radius range [0, 0]" "${F} 0 bars"
-          -var matrixd 0)
-src_error(subdomains_too_thin_x 3 "Fix reinforce/invert: subdomains 0.333333 thick in x are thinner than 2*(target rmax + search + rmax) = 0.8: processes relocating in one round could place spheres in one neighbourhood; use fewer processes in x (processors command) or a smaller search gap"
-          "${F} 0 bars search 0.3" -var procs "3 1 1")
+src_error(zero_radius_matrix 1 "Fix reinforce/invert: matrix atom 1 has radius 0; matrix spheres need a radius > 0"
+          "${F} 0 bars" -var matrixd 0)
 # Issue 12, items 5 and 16 (the same tests run on lmp_reinforce: ../adapters).
 src_error(rebar_group_dynamic 1 "${R}rebar group 'dbars' is dynamic: make it static first (group dbars static)"
           "${F} 0 dbars" -var pre "if 1 then \"variable isbar atom type==2\" \"group dbars dynamic all var isbar\"")

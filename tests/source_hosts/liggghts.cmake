@@ -8,7 +8,7 @@ set(BASIC --box 0 0.4 0 0.2 0 0.2 --radius 0.004 0.008 --fcc --bar 0.01 0.07 0.1
 foreach(np 1 2)
   add_test(NAME src_liggghts_scene_basic_np${np}
            COMMAND ${SCRIPTS}/scene.sh liggghts ${LIG_IN}/in.scene liggghts_basic ${np} ${AS_LIG}
-                   -- ${BASIC} -- -var procs "* * *" -var extra "radius 0.007 0.008" -- --rmin 0.007 --rmax 0.008)
+                   -- ${BASIC} -- -var procs "* * *" -var extra "size fit radius 0.007 0.008" -- --rmin 0.007 --rmax 0.008)
   set_tests_properties(src_liggghts_scene_basic_np${np} PROPERTIES PROCESSORS 2 TIMEOUT 300
                        FAIL_REGULAR_EXPRESSION "FAIL|deleted 0 kept" PASS_REGULAR_EXPRESSION "PASS liggghts_basic np=${np}")
 endforeach()
