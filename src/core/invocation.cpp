@@ -186,7 +186,9 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
     if (!std::isfinite(cutoff))
       host.fail("Fix reinforce/invert: the reach of the relocation is not finite");
     host.ensure_ghost_cutoff(cutoff);
-    const double margin = cutoff + largest;
+    // Everything a relocation reads lies within reach.read of a target's
+    // centre, and a target touches a bar: the view needs no more.
+    const double margin = reach.read + 2 * largest;
 
     a = host.atoms();
     std::vector<int> local;

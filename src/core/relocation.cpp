@@ -123,9 +123,10 @@ public:
     for (const Particle &p : particles)
       add(p.x, p.r, p.id, p.role != Role::Target, p.role == Role::Matrix && p.pushable,
           p.role == Role::Rebar);
-    // Only matrix spheres within `zone` of a bar may be pushed.
+    // Only matrix spheres within `zone` of a bar may be pushed (none with
+    // a negative zone: size fit pushes nothing).
     for (std::size_t i = 0; i < x_.size(); ++i)
-      if (pushable_[i]) pushable_[i] = gap_to_rebar(x_[i], r_[i], zone) <= zone;
+      if (pushable_[i]) pushable_[i] = zone >= 0 && gap_to_rebar(x_[i], r_[i], zone) <= zone;
   }
 
   int add(Vec3 x, double r, std::int64_t id, bool present, bool pushable, bool rebar = false)
@@ -689,10 +690,51 @@ std::int64_t count_packing_overlaps(const std::vector<Particle> &particles, doub
   return pairs;
 }
 
-Relocation relocate_targets(const std::vector<Particle> &particles, const Settings &settings,
+namespace {
+
+// The particles that can matter to the targets picked by `mine`: those
+// whose centre lies within the footprint's read reach of one of them (the
+// host's view is usually much larger). `index` maps back to `particles`.
+std::vector<Particle> near_targets(const std::vector<Particle> &particles, const Settings &settings,
+                                   const std::function<bool(const Particle &)> &mine,
+                                   std::vector<std::size_t> &index)
+{
+  std::vector<std::size_t> targets;
+  double target_rmax = 0, largest_r = settings.rmax;
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const Particle &p = particles[i];
+    largest_r = std::max(largest_r, p.r);
+    if (p.role == Role::Target && (mine ? mine(p) : p.owned)) {
+      targets.push_back(i);
+      target_rmax = std::max(target_rmax, p.r);
+    }
+  }
+  std::vector<Particle> out;
+  index.clear();
+  if (targets.empty()) return out;
+  const double read = footprint(settings, target_rmax, largest_r).read;
+  CellGrid grid(read);
+  for (std::size_t t : targets) grid.insert(particles[t].x, static_cast<int>(t));
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    bool near = false;
+    grid.for_each_near(particles[i].x, read, [&](int t) {
+      near = near || norm(particles[t].x - particles[i].x) <= read;
+    });
+    if (!near) continue;
+    index.push_back(i);
+    out.push_back(particles[i]);
+  }
+  return out;
+}
+
+}    // namespace
+
+Relocation relocate_targets(const std::vector<Particle> &all, const Settings &settings,
                             const Domain &domain, bool keep_unplaced, Stats &stats,
                             const std::function<bool(const Particle &)> &mine)
 {
+  std::vector<std::size_t> index;
+  const std::vector<Particle> particles = near_targets(all, settings, mine, index);
   Relocation out;
   std::vector<std::size_t> targets;
   std::unordered_map<std::int64_t, std::vector<int>> vacant;    // target copies by id
@@ -709,7 +751,7 @@ Relocation relocate_targets(const std::vector<Particle> &particles, const Settin
     return same_order_everywhere(particles[a].id, particles[a].x, particles[b].id, particles[b].x);
   });
 
-  Scene scene(particles, 2 * largest_r, settings.zone);
+  Scene scene(particles, 2 * largest_r, settings.size == SizeMode::Keep ? settings.zone : -1);
   Relocator relocator(scene, settings, domain, stats);
   std::map<std::int64_t, Vec3> pushes;
   std::vector<int> placed_at;    // the new sphere's index, per placed result
@@ -757,6 +799,7 @@ Relocation relocate_targets(const std::vector<Particle> &particles, const Settin
     out.targets[k].r = scene.r(placed_at[k]);
     pushes.erase(out.targets[k].id);
   }
+  for (TargetResult &t : out.targets) t.index = index[t.index];
   for (const auto &[id, dx] : pushes) {
     out.pushes.push_back({id, dx});
     stats.max_push = std::max(stats.max_push, norm(dx) / settings.rmin);
