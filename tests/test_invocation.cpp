@@ -261,3 +261,54 @@ TEST(Invocation, NoMatrixDoesNothing)
   EXPECT_EQ(t.stats.solves, 0);
   EXPECT_EQ(h.logged.size(), 1u);
 }
+
+// No target anywhere: one refresh at the start and nothing per round.
+TEST(Invocation, NoTargetsNoRounds)
+{
+  MemoryHost h;
+  fill(h, 6);
+  for (std::size_t i = 0; i < h.mask.size(); ++i)
+    if (h.mask[i] & kRebar) h.pos[i][1] = 0.999;    // the bar along an edge, clear of the lattice
+  for (std::size_t i = 0; i < h.mask.size(); ++i)
+    if (h.mask[i] & kRebar) h.radius[i] = 0.001;
+  const Totals t = run_invocation(h, parse_fix_arguments({"0", "bars"}));
+  EXPECT_EQ(t.stats.targets, 0);
+  EXPECT_EQ(t.rounds, 0);
+  EXPECT_EQ(h.refreshes, 1);
+}
+
+// One matrix radius with size fit: only voids of exactly that radius fit.
+// The log says so and names the keywords that change it.
+TEST(Invocation, MonodisperseFitSaysSo)
+{
+  MemoryHost h;
+  fill(h, 7);
+  for (std::size_t i = 0; i < h.mask.size(); ++i)
+    if (!(h.mask[i] & kRebar)) h.radius[i] = 0.03;
+  run_invocation(h, parse_fix_arguments({"0", "bars"}));
+  bool said = false;
+  for (const std::string &line : h.logged)
+    said = said || (line.find("single radius") != std::string::npos &&
+                    line.find("size keep") != std::string::npos);
+  EXPECT_TRUE(said);
+  MemoryHost k;
+  fill(k, 7);
+  run_invocation(k, parse_fix_arguments({"0", "bars"}));    // radii spread: no such line
+  for (const std::string &line : k.logged) EXPECT_EQ(line.find("single radius"), std::string::npos);
+}
+
+// Rebar of radius 0 is refused with one clear message (a point has no
+// volume to displace).
+TEST(Invocation, ZeroRadiusRebarIsAnError)
+{
+  MemoryHost h;
+  fill(h, 8);
+  h.add({0.5, 0.5, 0.5}, 0.0, kGroup | kRebar);
+  try {
+    run_invocation(h, parse_fix_arguments({"0", "bars"}));
+    FAIL() << "no error";
+  } catch (const std::runtime_error &e) {
+    EXPECT_NE(std::string(e.what()).find("rebar atom"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("has radius 0"), std::string::npos);
+  }
+}
