@@ -6,13 +6,52 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstring>
 #include <string>
 #include <vector>
 
 using namespace reinforce;
 
+namespace {
+
+// The numeric keywords over the whole double range: the input's bytes read
+// as doubles (any bit pattern: inf, nan, denormals, 1e308 ...), written as
+// the words a user would type. Whatever parses must give settings whose
+// reach is finite, with the scene's radii and box taken from the input too.
+void numeric_arguments(const std::uint8_t *data, std::size_t size)
+{
+  double v[10];
+  if (size < sizeof v) return;
+  std::memcpy(v, data, sizeof v);
+  auto word = [](double x) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.17g", x);
+    return std::string(text);
+  };
+  const std::vector<std::string> args = {
+      "0",         "bars",   "radius",  word(v[0]), word(v[1]), "search",   word(v[2]),
+      "zone",      word(v[3]), "push",  word(v[4]), "tol",      word(v[5]), "displaced",
+      word(v[6]),  "size",   (data[0] & 1) ? "keep" : "fit"};
+  try {
+    const FixOptions o = parse_fix_arguments(args);
+    if (!(o.tol >= kMinTol && o.tol < 1)) __builtin_trap();
+    const Settings s = make_settings(o, std::fabs(v[7]), std::fabs(v[8]), std::fabs(v[9]));
+    const Footprint f = footprint(s, std::fabs(v[8]), std::fabs(v[8]));
+    // Radii and boxes of real scenes (run_invocation stops with an ERROR
+    // line on a reach that is not finite).
+    const bool physical = std::fabs(v[8]) < 1e100 && std::fabs(v[9]) < 1e100;
+    if (physical && (!std::isfinite(f.read) || !std::isfinite(f.write) || !std::isfinite(s.search)))
+      __builtin_trap();
+  } catch (const OptionError &) {
+  }
+}
+
+}    // namespace
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
 {
+  numeric_arguments(data, size);
   std::vector<std::string> words(1);
   for (std::size_t i = 0; i < size; ++i) {
     const char c = static_cast<char>(data[i]);
@@ -25,7 +64,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
   if (words.back().empty()) words.pop_back();
   try {
     const FixOptions o = parse_fix_arguments(words);
-    if (o.every < 0 || o.tries <= 0 || !(o.tol > 0 && o.tol < 1) || o.polish < 0 || o.polish > 10)
+    if (o.every < 0 || o.tries <= 0 || !(o.tol >= kMinTol && o.tol < 1) || o.polish < 0 || o.polish > 10)
       __builtin_trap();
     if (o.radius_set && !(o.rmin > 0 && o.rmin <= o.rmax && std::isfinite(o.rmax)))
       __builtin_trap();
