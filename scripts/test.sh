@@ -123,9 +123,9 @@ elif [ "${REINFORCE_QUICK:-0}" != 1 ]; then
   echo "== sanitizer build (ASan + UBSan): core tests and MPI scenes"
   san="$top/build-sanitize"
   san_args=(-DREINFORCE_LIGGGHTS=OFF) san_targets=(core_tests make_scene check_scene)
-  san_tests="^Kernel|^Engine|^Fix|^Rounds|^Summary|^Invocation|^stability_periodic_2x2x1_np4$|^stability_stiff"
+  san_tests="^Kernel|^Engine|^Fix|^Schedule|^Summary|^Invocation|^stability_periodic_2x2x1_np4$|^stability_stiff|^lammps_identical_keep_2x2x1_np4$"
   if [ -n "$(skip_reason lammps)" ]; then
-    san_args+=(-DREINFORCE_LAMMPS=OFF) san_tests="^Kernel|^Engine|^Fix|^Rounds|^Summary|^Invocation"
+    san_args+=(-DREINFORCE_LAMMPS=OFF) san_tests="^Kernel|^Engine|^Fix|^Schedule|^Summary|^Invocation"
     skipped+=("sanitizer: LAMMPS scenes (lammps skipped)")
   else
     san_targets+=(lmp_reinforce)

@@ -168,9 +168,13 @@ TEST(Schedule, SameColourBlocksAreSeparated)
         const BlockLattice l = make_block_lattice(lo, hi, periodic, width);
         for (int d = 0; d < 3; ++d) {
           EXPECT_GE(l.count[d], 1);
-          if (l.count[d] > 1) EXPECT_GE(l.width[d], width * (1 - 1e-12));
+          if (l.count[d] > 1) {
+            EXPECT_GE(l.width[d], width * (1 - 1e-12));
+          }
           EXPECT_NEAR(l.count[d] * l.width[d], hi[d] - lo[d], 1e-12);
-          if (periodic[d] && l.count[d] > 1) EXPECT_EQ(l.count[d] % 2, 0);
+          if (periodic[d] && l.count[d] > 1) {
+            EXPECT_EQ(l.count[d] % 2, 0);
+          }
         }
         EXPECT_LE(l.rounds(), 8);
         // Every pair of blocks of one colour: separated in some dimension.
