@@ -1,20 +1,27 @@
 #!/usr/bin/env bash
 # Benchmarks fix reinforce/invert against what a user has, on the same
-# scenes in one run, and writes docs/benchmarks.md (bench/report.py).
+# scenes in one run, and writes docs/benchmarks.md (bench/report.py): every
+# sentence and number of that page comes from this run.
 #
-#   bash bench/run.sh            full run (about 20 minutes on 2 cores)
-#   bash bench/run.sh --quick    one small scene, one repeat, no report
+#   bash bench/run.sh            full run (about 15 minutes on 2 cores)
+#   bash bench/run.sh --quick    one small scene, one repeat, every method and
+#                                table; the page goes to a scratch folder
 #                                (run by the test suite so the harness cannot rot)
+#   REINFORCE_BENCH_SKIP="slab scaling"  leaves parts out (the page says so)
 #
 # Methods, each timed around its own operation only (not LAMMPS start-up):
-#   fix       reinforce/invert, choose first|closest, tries 15|100|1000;
+#   fix       reinforce/invert: defaults (size fit, choose closest, tries
+#             1000), choose first, tries 15 (paper-era budget), size keep;
 #             time = the fix's own f_ID[9]
 #   delete    delete_atoms overlap with cutoff r_bar + rmax (removes every
 #             target and more) and r_bar + rmin (misses some); time = wall
 #             clock around the command (shell date in the input)
 #   relax     dynamic relaxation, bars frozen: largest overlap and atoms
 #             lost against elapsed time, a dump every chunk of steps
-# plus the whole process time and peak memory (/usr/bin/time).
+# plus the whole process time and peak memory (/usr/bin/time), scene
+# quality (build/tests/scene_quality, before and after dumps), the fix's time
+# on 1 and 2 processes interleaved (speedup), and against rebar radius and
+# search gap.
 set -euo pipefail
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 quick=0 repeats=5
@@ -31,19 +38,43 @@ if [ -z "${REINFORCE_BUILD:-}" ]; then source "$top/scripts/setup.sh"; fi
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 if [ "$quick" = 0 ] && ! command -v gnuplot >/dev/null; then
   sudo_cmd=""; [ "$(id -u)" -ne 0 ] && sudo_cmd="sudo"
-  $sudo_cmd apt-get install -y -q gnuplot-nox >/dev/null
+  $sudo_cmd apt-get install -y -q gnuplot-nox >/dev/null || echo "bench: no gnuplot, no plots" >&2
 fi
 lmp="$REINFORCE_BUILD/src/lammps/lmp_reinforce"
 check="$REINFORCE_BUILD/tests/check_scene"
+quality="$REINFORCE_BUILD/tests/scene_quality"
 make_scene="$REINFORCE_BUILD/tests/make_scene"
 inputs="$top/bench/lammps"
 out=${REINFORCE_BENCH_OUT:-$top/bench/out}
-[ "$quick" = 1 ] && [ -z "${REINFORCE_BENCH_OUT:-}" ] && out=$(mktemp -d "${TMPDIR:-/tmp}/bench_quick.XXXXXX")
-mkdir -p "$out/scenes" "$out/runs"
+docs="$top/docs"
+if [ "$quick" = 1 ] && [ -z "${REINFORCE_BENCH_OUT:-}" ]; then
+  out=$(mktemp -d "${TMPDIR:-/tmp}/bench_quick.XXXXXX")
+fi
+[ "$quick" = 1 ] && docs="$out/docs"
+mkdir -p "$out/scenes" "$out/runs" "$docs"
 results="$out/results.tsv"
 curves="$out/relax.tsv"
-echo -e "scene\tatoms\tmethod\tparam\tnp\trep\ttargets\trelocated\tdeleted\tvolume_before\tvolume_after\toverlap\tsolves\top_seconds\twall_seconds\tpeak_kb" > "$results"
+qual="$out/quality.tsv"
+meta="$out/meta.tsv"
+echo -e "scene\tatoms\tmethod\tparam\tnp\trep\ttargets\trelocated\tdeleted\tvolume_before\tvolume_after\toverlap\tsolves\top_seconds\twall_seconds\tpeak_kb\tremoved\trounds\trebar" > "$results"
 echo -e "scene\tchunk\tseconds\tatoms\tmatrix_rebar\tmatrix_matrix" > "$curves"
+echo -e "scene\tmethod\tparam\tshell_ratio\tshell_ratio_se\tremoved_ratio\tks\ttargets\tdeleted\tmoved_nontargets" > "$qual"
+echo -e "key\tvalue" > "$meta"
+meta() { echo -e "$1\t$2" >> "$meta"; }
+meta quick "$quick"
+meta repeats "$repeats"
+meta started "$(date -u '+%Y-%m-%d %H:%M UTC')"
+meta commit "$(git -C "$top" rev-parse --short HEAD 2>/dev/null || echo unknown)"
+start_s=$(date +%s)
+part() {    # part NAME: true when the part runs; records it, and the load average
+  local p=$1
+  if [[ " ${REINFORCE_BENCH_SKIP:-} " == *" $p "* ]]; then
+    meta "skipped" "$p"; echo "== $p: skipped (REINFORCE_BENCH_SKIP)"; return 1
+  fi
+  meta "load_$p" "$(cut -d' ' -f1-3 /proc/loadavg)"
+  echo "== $p ($(date -u +%H:%M:%S), load $(cut -d' ' -f1 /proc/loadavg))"
+  return 0
+}
 
 timed() {    # timed LOGFILE NP ARGS... : runs lmp_reinforce, prints "wall peak_kb"
   local log=$1 np=$2
@@ -55,125 +86,233 @@ timed() {    # timed LOGFILE NP ARGS... : runs lmp_reinforce, prints "wall peak_
 result_value() {    # result_value LOG KEY : a value from the RESULT line
   grep '^RESULT' "$1" | tail -1 | tr ' ' '\n' | awk -v k="$2" 'prev == k {print; exit} {prev = $0}'
 }
+atoms_of() { awk '/ atoms$/ {print $1; exit}' "$1"; }
+rebar_of() {    # rebar spheres of a scene data file (type 2)
+  awk '/^Atoms/ {on = 1; next} /^(Velocities|Bonds)/ {on = 0} on && NF >= 7 && $2 == 2 {n++} END {print n + 0}' "$1"
+}
+before_dump() {    # before_dump SCENE: the scene as a text dump (once)
+  local d="${1%.data}.before.dump"
+  [ -f "$d" ] || (cd "$inputs" && mpirun -np 1 "$lmp" -in in.dump -var scene "$1" -var out "$d" -log none -screen none)
+  echo "$d"
+}
 
-# bench_scene NAME DATAFILE RMIN RMAX RBAR NPS RELAX_CHUNKS RELAX_STEPS
+# run_fix NAME SCENE METHOD PARAM NP REP [lmp -var pairs...]: one fix run, one row.
+# Leaves the run folder's after.dump for the caller (quality), removes older ones.
+run_fix() {
+  local name=$1 scene=$2 method=$3 param=$4 np=$5 rep=$6
+  shift 6
+  local run="$out/runs/${name}_$(echo "$method $param" | tr -c 'A-Za-z0-9.\n-' '_')_np${np}_$rep"
+  mkdir -p "$run"
+  local wall peak
+  read -r wall peak < <(timed "$run/log" "$np" -in "$inputs/in.fix" -var scene "$scene" -var out "$run" "$@")
+  local v=()
+  for k in targets relocated deleted volume_before volume_after overlap solves seconds; do v+=("$(result_value "$run/log" $k)"); done
+  local IFS=$'\t'
+  echo -e "$name\t$(atoms_of "$scene")\t$method\t$param\t$np\t$rep\t${v[*]}\t$wall\t$peak\t$(result_value "$run/log" removed)\t$(result_value "$run/log" rounds)\t${REBAR:-}" >> "$results"
+  last_run=$run
+}
+# run_delete NAME SCENE CUTOFF NP REP RMIN
+run_delete() {
+  local name=$1 scene=$2 cut=$3 np=$4 rep=$5 rmin=$6
+  local run="$out/runs/${name}_delete_${cut}_np${np}_$rep" wall peak seconds overlap
+  mkdir -p "$run"
+  read -r wall peak < <(timed "$run/log" "$np" -in "$inputs/in.delete" -var scene "$scene" \
+    -var out "$run" -var cutoff "$cut")
+  seconds=$(awk 'NR == 1 {a = $1} NR == 2 {printf "%.6f", $1 - a}' "$run/t0" "$run/t1")
+  overlap=$("$check" --stats "$run/after.dump" --rmin "$rmin" | awk '{print $6}')
+  echo -e "$name\t$(atoms_of "$scene")\tdelete_atoms overlap\t$cut\t$np\t$rep\t\t\t$(result_value "$run/log" deleted)\t\t\t$overlap\t\t$seconds\t$wall\t$peak\t\t\t" >> "$results"
+  last_run=$run
+}
+# quality NAME SCENE METHOD PARAM RMIN RMAX: scene_quality of the last run's after.dump.
+quality_of() {
+  local name=$1 scene=$2 method=$3 param=$4 rmin=$5 rmax=$6 line
+  line=$("$quality" --before "$(before_dump "$scene")" --after "$last_run/after.dump" --rmin "$rmin" \
+    --rmax "$rmax" --quiet-profile ${QUALITY_ARGS:-} | grep '^QUALITY') || { echo "bench: scene_quality failed" >&2; exit 1; }
+  local q=()
+  for k in shell_ratio shell_ratio_se removed_ratio ks targets deleted moved_nontargets; do
+    q+=("$(tr ' ' '\n' <<<"$line" | awk -F= -v k="$k" '$1 == k {print $2}')")
+  done
+  local IFS=$'\t'
+  echo -e "$name\t$method\t$param\t${q[*]}" >> "$qual"
+}
+
+# bench_scene NAME DATAFILE RMIN RMAX RBAR REPEATS: every method, 1 process,
+# repeats interleaved; scene quality of the first repeat of each.
 bench_scene() {
-  local name=$1 data=$2 rmin=$3 rmax=$4 rbar=$5 nps=$6 chunks=$7 steps=$8
-  local atoms run np rep wall peak
-  atoms=$(awk '/ atoms$/ {print $1; exit}' "$data")
-  echo "== $name ($atoms atoms)"
-  for np in $nps; do
-    for rep in $(seq "$repeats"); do
-      for variant in "closest 1000" "first 1000" "closest 100" "closest 15" "first 15"; do
-        [ "$quick" = 1 ] && [ "$variant" != "closest 1000" ] && continue
-        set -- $variant
-        run="$out/runs/${name}_fix_$1_$2_np${np}_$rep"
-        mkdir -p "$run"
-        read -r wall peak < <(timed "$run/log" "$np" -in "$inputs/in.fix" -var scene "$data" \
-          -var out "$run" -var choose "$1" -var tries "$2")
-        echo -e "$name\t$atoms\tfix $1\t$2\t$np\t$rep\t$(result_value "$run/log" targets)\t$(result_value "$run/log" relocated)\t$(result_value "$run/log" deleted)\t$(result_value "$run/log" volume_before)\t$(result_value "$run/log" volume_after)\t$(result_value "$run/log" overlap)\t$(result_value "$run/log" solves)\t$(result_value "$run/log" seconds)\t$wall\t$peak" >> "$results"
-        rm -f "$run/after.dump"
-      done
-      for cut in "$(awk -v a="$rbar" -v b="$rmax" 'BEGIN {print a + b}')" \
-                 "$(awk -v a="$rbar" -v b="$rmin" 'BEGIN {print a + b}')"; do
-        run="$out/runs/${name}_delete_${cut}_np${np}_$rep"
-        mkdir -p "$run"
-        read -r wall peak < <(timed "$run/log" "$np" -in "$inputs/in.delete" -var scene "$data" \
-          -var out "$run" -var cutoff "$cut")
-        local seconds overlap
-        seconds=$(awk 'NR == 1 {a = $1} NR == 2 {printf "%.6f", $1 - a}' "$run/t0" "$run/t1")
-        overlap=$("$check" --stats "$run/after.dump" --rmin "$rmin" | awk '{print $6}')
-        echo -e "$name\t$atoms\tdelete_atoms overlap\t$cut\t$np\t$rep\t\t\t$(result_value "$run/log" deleted)\t\t\t$overlap\t\t$seconds\t$wall\t$peak" >> "$results"
-        rm -f "$run/after.dump"
-      done
+  local name=$1 data=$2 rmin=$3 rmax=$4 rbar=$5 reps=$6 rep cut
+  echo "== $name ($(atoms_of "$data") atoms)"
+  for rep in $(seq "$reps"); do
+    run_fix "$name" "$data" "fix defaults" 1000 1 "$rep"
+    [ "$rep" = 1 ] && quality_of "$name" "$data" "fix defaults" 1000 "$rmin" "$rmax"
+    rm -f "$last_run/after.dump"
+    run_fix "$name" "$data" "fix choose first" 1000 1 "$rep" -var choose first
+    [ "$rep" = 1 ] && quality_of "$name" "$data" "fix choose first" 1000 "$rmin" "$rmax"
+    rm -f "$last_run/after.dump"
+    run_fix "$name" "$data" "fix tries 15" 15 1 "$rep" -var tries 15
+    [ "$rep" = 1 ] && quality_of "$name" "$data" "fix tries 15" 15 "$rmin" "$rmax"
+    rm -f "$last_run/after.dump"
+    run_fix "$name" "$data" "fix size keep" 1000 1 "$rep" -var opts "size keep"
+    [ "$rep" = 1 ] && quality_of "$name" "$data" "fix size keep" 1000 "$rmin" "$rmax"
+    rm -f "$last_run/after.dump"
+    for cut in "$(awk -v a="$rbar" -v b="$rmax" 'BEGIN {print a + b}')" \
+               "$(awk -v a="$rbar" -v b="$rmin" 'BEGIN {print a + b}')"; do
+      run_delete "$name" "$data" "$cut" 1 "$rep" "$rmin"
+      [ "$rep" = 1 ] && quality_of "$name" "$data" "delete_atoms overlap" "$cut" "$rmin" "$rmax"
+      rm -f "$last_run/after.dump"
     done
   done
-  # Dynamic relaxation, once, serially: the largest overlap against time.
-  run="$out/runs/${name}_relax"
+}
+# relax NAME DATAFILE RMIN CHUNKS STEPS: dynamic relaxation, once, serially.
+relax() {
+  local name=$1 data=$2 rmin=$3 chunks=$4 steps=$5 run="$out/runs/${1}_relax" wall peak t0 i
   mkdir -p "$run"
   read -r wall peak < <(timed "$run/log" 1 -in "$inputs/in.relax" -var scene "$data" -var out "$run" \
     -var chunks "$chunks" -var chunk "$steps" -var rmin "$rmin")
-  local t0 i
   t0=$(cat "$run/relax_0.time")
   for i in $(seq 0 "$chunks"); do
     read -r _ a _ _ _ mr _ mm < <("$check" --stats "$run/relax_$i.dump" --rmin "$rmin")
     echo -e "$name\t$i\t$(awk -v a="$t0" -v b="$(cat "$run/relax_$i.time")" 'BEGIN {printf "%.4f", b - a}')\t$a\t$mr\t$mm" >> "$curves"
     rm -f "$run/relax_$i.dump"
   done
-  # deleted = atoms lost (thrown out of the box) by the end; overlap and time
-  # of the last dump.
-  awk -F'\t' -v n="$name" -v steps="$((chunks * steps))" -v w="$wall" -v p="$peak" -v atoms="$atoms" '
+  awk -F'\t' -v n="$name" -v steps="$((chunks * steps))" -v w="$wall" -v p="$peak" -v atoms="$(atoms_of "$data")" '
     $1 == n { if (first == "") first = $4; last = $4; t = $3; mr = $5 }
-    END { printf "%s\t%s\trelax\t%s steps\t1\t1\t\t\t%d\t\t\t%s\t\t%s\t%s\t%s\n", n, atoms, steps, first - last, mr, t, w, p }' \
+    END { printf "%s\t%s\trelax\t%s steps\t1\t1\t\t\t%d\t\t\t%s\t\t%s\t%s\t%s\t\t\t\n", n, atoms, steps, first - last, mr, t, w, p }' \
     "$curves" >> "$results"
 }
+# speedup NAME DATAFILE REPEATS: the defaults on 1 and 2 processes, interleaved.
+speedup() {
+  local name=$1 data=$2 reps=$3 rep np
+  for rep in $(seq "$reps"); do
+    for np in 1 2; do
+      run_fix "speedup_$name" "$data" "fix defaults" 1000 "$np" "$rep"
+      rm -f "$last_run/after.dump"
+    done
+  done
+}
+# series_gap NAME DATAFILE RMAX REPEATS; series_rbar NAME MATRIX REPEATS CUT
+series_gap() {
+  local name=$1 data=$2 rmax=$3 reps=$4 rep g
+  for rep in $(seq "$reps"); do
+    for g in 1 10 100 1e20; do
+      local gap
+      gap=$([ "$g" = 1e20 ] && echo 1e20 || awk -v g="$g" -v r="$rmax" 'BEGIN {print g * r}')
+      run_fix "gap" "$data" "fix search" "$g" 1 "$rep" -var opts "search $gap"
+      rm -f "$last_run/after.dump"
+    done
+  done
+}
+series_rbar() {
+  local matrix=$1 lx=$2 cut=$3 reps=$4 rep f scene
+  # One bar along x at mid-height; its spheres stay 7.66 mm apart (the
+  # overlapping chain of the 5 mm bar): thinner bars are beads on the same
+  # line, so the rebar count stays and only the radius changes.
+  for f in 1 1e-2 1e-3 1e-4; do
+    scene="$out/scenes/rbar_$f.data"
+    if [ ! -f "$scene" ]; then
+      BAR_RADIUS=$(awk -v f="$f" 'BEGIN {print 0.005 * f}') BAR_STEP=0.00766 \
+        bash "$top/bench/make_bars.sh" "$out/scenes/rbar_bars.data" "$lx" 0.25 0.25 line 1
+      mpirun -np 1 "$lmp" -in "$inputs/in.prepare" -var matrix "$matrix" -var bars "$out/scenes/rbar_bars.data" \
+        -var out "$scene" -var cut "$cut" -log none -screen none
+    fi
+  done
+  for rep in $(seq "$reps"); do
+    for f in 1 1e-2 1e-3 1e-4; do
+      scene="$out/scenes/rbar_$f.data"
+      REBAR=$(rebar_of "$scene") run_fix "rbar" "$scene" "fix rebar radius" "$f" 1 "$rep"
+      rm -f "$last_run/after.dump"
+    done
+  done
+}
+finish() {
+  meta "load_end" "$(cut -d' ' -f1-3 /proc/loadavg)"
+  meta "minutes" "$(awk -v s="$(( $(date +%s) - start_s ))" 'BEGIN {printf "%.1f", s / 60}')"
+  /usr/bin/python3 "$top/bench/report.py" "$out" "$docs"
+  echo "wrote $docs/benchmarks.md"
+}
 
+beam="$top/examples/beam/data"
 if [ "$quick" = 1 ]; then
-  "$make_scene" "$out/scenes/small.data" --fcc --box 0 0.2 0 0.1 0 0.1 --radius 0.005 0.0075 \
+  small="$out/scenes/small.data"
+  "$make_scene" "$small" --fcc --box 0 0.2 0 0.1 0 0.1 --radius 0.005 0.0075 \
     --bar 0.01 0.05 0.05 0.19 0.05 0.05 0.005 0.0077
-  bench_scene small "$out/scenes/small.data" 0.005 0.0075 0.005 "1" 2 20
-  lines=$(($(wc -l < "$results") - 1))
-  echo "bench --quick: $lines result rows, $(($(wc -l < "$curves") - 1)) relaxation points in $out"
-  [ "$lines" -eq 4 ] && [ "$(wc -l < "$curves")" -eq 4 ] || { echo "bench --quick: missing rows"; exit 1; }
-  awk -F'\t' 'NR > 1 && $3 == "fix closest" && ($7 == "" || $14 == "") {bad = 1} END {exit bad}' "$results" \
+  meta scenes "small"
+  part compare && bench_scene small "$small" 0.005 0.0075 0.005 1
+  part relax && relax small "$small" 0.005 2 20
+  part speedup && speedup small "$small" 1
+  part gap && series_gap small "$small" 0.0075 1
+  part rbar && series_rbar "$beam/matrix_phi060.data.gz" 0.125 0.125 1
+  finish
+  rows=$(($(wc -l < "$results") - 1))
+  echo "bench --quick: $rows result rows, $(($(wc -l < "$qual") - 1)) quality rows, $(($(wc -l < "$curves") - 1)) relaxation points in $out"
+  [ "$rows" -eq $((6 + 1 + 2 + 4 + 4)) ] && [ "$(wc -l < "$qual")" -eq 7 ] && [ "$(wc -l < "$curves")" -eq 4 ] ||
+    { echo "bench --quick: missing rows"; exit 1; }
+  awk -F'\t' 'NR > 1 && $3 ~ /^fix/ && ($7 == "" || $14 == "" || $18 == "") {bad = 1} END {exit bad}' "$results" \
     || { echo "bench --quick: fix row incomplete"; exit 1; }
+  grep -q "^## Parallel speedup" "$docs/benchmarks.md" && grep -q "^## Scene quality" "$docs/benchmarks.md" &&
+    grep -q "^## Cost against rebar radius and search gap" "$docs/benchmarks.md" ||
+    { echo "bench --quick: report section missing"; exit 1; }
   [ -z "${REINFORCE_BENCH_OUT:-}" ] && rm -rf "$out"
   exit 0
 fi
 
-beam="$top/examples/beam/data"
+meta scenes "beam050 beam060 beam064 slab"
 for phi in 050 060 064; do
   scene="$out/scenes/beam$phi.data"
   [ -f "$scene" ] || mpirun -np 1 "$lmp" -in "$inputs/in.prepare" -var matrix "$beam/matrix_phi$phi.data.gz" \
     -var bars "$beam/bars.data" -var out "$scene" -log none -screen none
-  bench_scene "beam$phi" "$scene" 0.0025 0.0075 0.005 "1 2" 20 500
+done
+part compare && for phi in 050 060 064; do
+  bench_scene "beam$phi" "$out/scenes/beam$phi.data" 0.0025 0.0075 0.005 3
+done
+part speedup && speedup beam060 "$out/scenes/beam060.data" 5
+part gap && series_gap beam060 "$out/scenes/beam060.data" 0.0075 3
+part rbar && series_rbar "$beam/matrix_phi060.data.gz" 0.5 0 3
+part relax && for phi in 050 060 064; do
+  relax "beam$phi" "$out/scenes/beam$phi.data" 0.0025 10 500
 done
 
 # The slab: the 0.60 beam packing replicated 2 x 5 x 2 (1.0 x 1.25 x 0.5 m,
 # 573k matrix spheres) with a mesh of bars 0.1 m apart in two layers.
 slab="$out/scenes/slab.data"
-if [ ! -f "$slab" ]; then
+if [[ " ${REINFORCE_BENCH_SKIP:-} " != *" slab "* ]] && [ ! -f "$slab" ]; then
   bash "$top/bench/make_bars.sh" "$out/scenes/mesh.data" 1.0 1.25 0.5 mesh 0.1 0.04
   mpirun -np 1 "$lmp" -in "$inputs/in.prepare" -var matrix "$beam/matrix_phi060.data.gz" \
     -var bars "$out/scenes/mesh.data" -var out "$slab" -var rep "2 5 2" -log none -screen none
 fi
-repeats_full=$repeats repeats=3
-bench_scene slab "$slab" 0.0025 0.0075 0.005 "1 2" 2 100
-repeats=$repeats_full
+if part slab; then
+  speedup slab "$slab" 5
+  for rep in 1 2 3; do
+    run_fix slab "$slab" "fix size keep" 1000 1 "$rep" -var opts "size keep"
+    rm -f "$last_run/after.dump"
+    run_delete slab "$slab" 0.0125 1 "$rep" 0.0025; rm -f "$last_run/after.dump"
+    run_delete slab "$slab" 0.0075 1 "$rep" 0.0025; rm -f "$last_run/after.dump"
+  done
+fi
 
 # Scaling: the same single bar in growing scenes (work fixed, size grows),
 # and a growing number of bars in one scene (size fixed, work grows).
-for rep in "0.125:1 1 1" "0:1 1 1" "0:2 2 1" "0:4 2 2" "0:4 4 2"; do
-  cut=${rep%%:*} r=${rep##*:}
-  name="size_$(echo "$r" | tr -d ' ')_cut$cut"
-  scene="$out/scenes/$name.data"
-  # One bar 0.125 m long, at mid-height of the first beam copy, in every scene.
-  bash "$top/bench/make_bars.sh" "$out/scenes/onebar.data" 0.125 0.25 0.25 line 1
-  mpirun -np 1 "$lmp" -in "$inputs/in.prepare" -var matrix "$beam/matrix_phi060.data.gz" \
-    -var bars "$out/scenes/onebar.data" -var out "$scene" -var rep "$r" -var cut "$cut" -log none -screen none
-  for rep_i in $(seq "$repeats"); do
-    run="$out/runs/${name}_$rep_i"; mkdir -p "$run"
-    read -r wall peak < <(timed "$run/log" 1 -in "$inputs/in.fix" -var scene "$scene" -var out "$run")
-    atoms=$(awk '/ atoms$/ {print $1; exit}' "$scene")
-    echo -e "scaling_size\t$atoms\tfix closest\t1000\t1\t$rep_i\t$(result_value "$run/log" targets)\t$(result_value "$run/log" relocated)\t$(result_value "$run/log" deleted)\t\t\t$(result_value "$run/log" overlap)\t$(result_value "$run/log" solves)\t$(result_value "$run/log" seconds)\t$wall\t$peak" >> "$results"
-    rm -f "$run/after.dump"
+if part scaling; then
+  for rep in "0.125:1 1 1" "0:1 1 1" "0:2 2 1" "0:4 2 2"; do
+    cut=${rep%%:*} r=${rep##*:}
+    name="size_$(echo "$r" | tr -d ' ')_cut$cut"
+    scene="$out/scenes/$name.data"
+    bash "$top/bench/make_bars.sh" "$out/scenes/onebar.data" 0.125 0.25 0.25 line 1
+    mpirun -np 1 "$lmp" -in "$inputs/in.prepare" -var matrix "$beam/matrix_phi060.data.gz" \
+      -var bars "$out/scenes/onebar.data" -var out "$scene" -var rep "$r" -var cut "$cut" -log none -screen none
+    for rep_i in 1 2 3; do
+      run_fix scaling_size "$scene" "fix defaults" 1000 1 "$rep_i"; rm -f "$last_run/after.dump"
+    done
+    rm -f "$scene"
   done
-  rm -f "$scene"
-done
-for bars in 1 2 4 8 16; do
-  scene="$out/scenes/bars$bars.data"
-  bash "$top/bench/make_bars.sh" "$out/scenes/nbars.data" 1.0 1.0 0.25 line "$bars"
-  mpirun -np 1 "$lmp" -in "$inputs/in.prepare" -var matrix "$beam/matrix_phi060.data.gz" \
-    -var bars "$out/scenes/nbars.data" -var out "$scene" -var rep "2 4 1" -log none -screen none
-  for rep_i in $(seq "$repeats"); do
-    run="$out/runs/bars${bars}_$rep_i"; mkdir -p "$run"
-    read -r wall peak < <(timed "$run/log" 1 -in "$inputs/in.fix" -var scene "$scene" -var out "$run")
-    atoms=$(awk '/ atoms$/ {print $1; exit}' "$scene")
-    echo -e "scaling_targets\t$atoms\tfix closest\t1000\t1\t$rep_i\t$(result_value "$run/log" targets)\t$(result_value "$run/log" relocated)\t$(result_value "$run/log" deleted)\t\t\t$(result_value "$run/log" overlap)\t$(result_value "$run/log" solves)\t$(result_value "$run/log" seconds)\t$wall\t$peak" >> "$results"
-    rm -f "$run/after.dump"
+  for bars in 1 2 4 8 16; do
+    scene="$out/scenes/bars$bars.data"
+    bash "$top/bench/make_bars.sh" "$out/scenes/nbars.data" 1.0 1.0 0.25 line "$bars"
+    mpirun -np 1 "$lmp" -in "$inputs/in.prepare" -var matrix "$beam/matrix_phi060.data.gz" \
+      -var bars "$out/scenes/nbars.data" -var out "$scene" -var rep "2 4 1" -log none -screen none
+    for rep_i in 1 2 3; do
+      run_fix scaling_targets "$scene" "fix defaults" 1000 1 "$rep_i"; rm -f "$last_run/after.dump"
+    done
+    rm -f "$scene"
   done
-  rm -f "$scene"
-done
-
-/usr/bin/python3 "$top/bench/report.py" "$out" "$top/docs"
-echo "wrote $top/docs/benchmarks.md"
+fi
+finish
