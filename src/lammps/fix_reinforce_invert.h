@@ -1,5 +1,5 @@
 // fix reinforce/invert for LAMMPS: relocates the matrix spheres that overlap
-// reinforcement bars (DESIGN.md). This adapter translates LAMMPS's atoms into
+// reinforcement bars (docs/design.md). This adapter translates LAMMPS's atoms into
 // the engine's view and back and owns LAMMPS's communication; the algorithm
 // lives in src/core (reinforce::run_invocation).
 //
