@@ -19,6 +19,8 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr int kMaxSweeps = 40;
 constexpr int kMaxAttempts = 2;
 constexpr std::size_t kMaxPushed = 48;
+// Rebar spheres among the candidates of one target, at most (the nearest).
+constexpr int kMaxRebarCandidates = 3;
 
 double ball_volume(double r)
 {
@@ -231,10 +233,14 @@ public:
   }
 
   // Present spheres whose surface gap to sphere (x, r) is at most `search`,
-  // nearest first: at least the `wanted` nearest (all of them when fewer lie
-  // within `search`). The query grows until it holds them, so its cost
-  // follows the spheres found, not the gap asked.
-  std::vector<Candidate> candidates(Vec3 x, double r, double search, std::size_t wanted) const
+  // nearest first, with at most `max_rebar` rebar spheres (the nearest): at
+  // least the `wanted` nearest (all of them when fewer lie within
+  // `search`). The query grows until it holds them, so its cost follows the
+  // spheres found, not the gap asked. A thin bar is a chain of many small
+  // spheres: left alone they would fill the list, and four beads of one
+  // chain share only tangent spheres of their own size.
+  std::vector<Candidate> candidates(Vec3 x, double r, double search, std::size_t wanted,
+                                    int max_rebar) const
   {
     double range = r + 2 * largest_r_;
     for (;;) {
@@ -245,10 +251,14 @@ public:
         const double gap = norm(x_[j] - x) - r_[j] - r;
         if (gap <= complete) out.push_back({gap, id_[j], j});
       });
-      if (out.size() >= wanted || complete >= search) {
-        std::sort(out.begin(), out.end());
-        return out;
-      }
+      std::sort(out.begin(), out.end());
+      int rebar = 0;
+      out.erase(std::remove_if(out.begin(), out.end(),
+                               [&](const Candidate &c) { return rebar_[c.index] && ++rebar > max_rebar; }),
+                out.end());
+      // Every view that holds the spheres within `complete` gives the same
+      // list up to here: the answer does not depend on the process count.
+      if (out.size() >= wanted || complete >= search) return out;
       range *= 2;
     }
   }
@@ -345,7 +355,7 @@ private:
   template <class F> void for_each_solution(Vec3 x0, double r0, double rho_max, F &&take)
   {
     const std::vector<Candidate> near =
-        scene_.candidates(x0, r0, s_.search, candidates_needed(s_.tries));
+        scene_.candidates(x0, r0, s_.search, candidates_needed(s_.tries), kMaxRebarCandidates);
     const double max_shift = r0 + s_.search;
     for_each_group(static_cast<int>(near.size()), s_.tries, [&](int a, int b, int c, int d) {
       const Sphere group[4] = {scene_.sphere(near[a].index), scene_.sphere(near[b].index),
