@@ -217,7 +217,8 @@ TEST(Engine, KeepModeKeepsRadiiAndMakesRoom)
   // The displaced volume is what the fix removes.
   double removed = 0;
   for (const TargetResult &t : rel.targets)
-    if (t.outcome != Outcome::Placed) removed += 4.0 / 3.0 * M_PI * std::pow(s.particles[t.index].r, 3);
+    if (t.outcome != Outcome::Placed)
+      removed += 4.0 / 3.0 * M_PI * std::pow(s.particles[t.index].r, 3);
   EXPECT_NEAR(removed, stats.volume_removed, 1e-12);
 }
 

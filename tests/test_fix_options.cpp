@@ -44,16 +44,17 @@ TEST(FixOptions, Defaults)
   EXPECT_DOUBLE_EQ(s.push, 0.3);
   EXPECT_EQ(s.size, SizeMode::Fit);
   EXPECT_GT(s.displaced, 1);    // size fit tries every target
-  EXPECT_EQ(make_settings(parse_fix_arguments({"0", "bars", "size", "keep"}), 0.1, 0.3, 100).displaced,
-            0.5);
+  EXPECT_EQ(
+      make_settings(parse_fix_arguments({"0", "bars", "size", "keep"}), 0.1, 0.3, 100).displaced,
+      0.5);
 }
 
 // Gaps, pushes and radii larger than the box are capped at its diagonal, so
 // the reach (and the ghost cutoff) stays finite.
 TEST(FixOptions, HugeValuesAreCappedByTheBox)
 {
-  const FixOptions o = parse_fix_arguments(
-      {"0", "bars", "radius", "0.004", "1e308", "search", "1e300", "zone", "1e300", "push", "1e300"});
+  const FixOptions o = parse_fix_arguments({"0", "bars", "radius", "0.004", "1e308", "search",
+                                            "1e300", "zone", "1e300", "push", "1e300"});
   const Settings s = make_settings(o, 0.004, 0.008, 0.5);
   EXPECT_EQ(s.rmax, 0.5);
   EXPECT_EQ(s.search, 0.5);
@@ -65,17 +66,17 @@ TEST(FixOptions, HugeValuesAreCappedByTheBox)
 
 TEST(FixOptions, UnplacedKeepTriesEveryTarget)
 {
-  const Settings s = make_settings(parse_fix_arguments({"0", "bars", "unplaced", "keep"}), 1, 2, 100);
+  const Settings s =
+      make_settings(parse_fix_arguments({"0", "bars", "unplaced", "keep"}), 1, 2, 100);
   EXPECT_GT(s.displaced, 1);
 }
 
 TEST(FixOptions, AllKeywords)
 {
-  const FixOptions o = parse_fix_arguments({"100", "bars", "radius", "0.2", "0.4", "search", "1.5",
-                                            "tries", "15", "choose", "first", "unplaced", "keep",
-                                            "region", "inside", "tol", "1e-9", "polish", "0",
-                                            "size", "fit", "zone", "0.7", "push", "0.05",
-                                            "displaced", "0.8"});
+  const FixOptions o = parse_fix_arguments(
+      {"100",    "bars",  "radius",   "0.2",  "0.4",    "search", "1.5",  "tries",     "15",
+       "choose", "first", "unplaced", "keep", "region", "inside", "tol",  "1e-9",      "polish",
+       "0",      "size",  "fit",      "zone", "0.7",    "push",   "0.05", "displaced", "0.8"});
   EXPECT_EQ(o.every, 100);
   EXPECT_TRUE(o.radius_set);
   EXPECT_EQ(o.rmin, 0.2);

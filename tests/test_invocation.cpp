@@ -153,9 +153,8 @@ TEST(Invocation, KeepLeavesUnplacedInPlace)
   fill(h, 2);
   const std::size_t before = h.pos.size();
   // A radius range no void fits: nothing relocates, everything is kept.
-  const Totals t = run_invocation(
-      h, parse_fix_arguments(
-             {"0", "bars", "size", "fit", "radius", "0.3", "0.3", "unplaced", "keep"}));
+  const Totals t = run_invocation(h, parse_fix_arguments({"0", "bars", "size", "fit", "radius",
+                                                          "0.3", "0.3", "unplaced", "keep"}));
   EXPECT_GT(t.stats.targets, 0);
   EXPECT_EQ(t.stats.relocated, 0);
   EXPECT_EQ(t.kept, t.stats.targets);

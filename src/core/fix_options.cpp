@@ -173,7 +173,8 @@ Settings make_settings(const FixOptions &o, double matrix_rmin, double matrix_rm
   s.size = o.size;
   // `unplaced keep` deletes nothing: every target is tried. size fit (the
   // seed paper) tries every target unless told otherwise.
-  s.displaced = o.keep_unplaced ? 2 : (o.displaced_set || o.size == SizeMode::Keep ? o.displaced : 2);
+  s.displaced =
+      o.keep_unplaced ? 2 : (o.displaced_set || o.size == SizeMode::Keep ? o.displaced : 2);
   return s;
 }
 

@@ -163,7 +163,7 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
   largest = host.max(largest);
 
   Totals totals;
-  double unit = matrix_rmin;    // of the overlaps reported: the settings' rmin
+  double unit = matrix_rmin;           // of the overlaps reported: the settings' rmin
   if (host.sum(matrix_count) > 0) {    // else: no matrix sphere, nothing to relocate
     const Domain box = host.placement_domain();
     const double diagonal = norm(box.hi - box.lo);
@@ -180,8 +180,8 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
                       "or the radius keyword widen it\n",
                       settings.rmin));
     const Footprint reach = footprint(settings, matrix_rmax, largest);
-    const BlockLattice lattice = make_block_lattice(box.lo, box.hi, box.periodic,
-                                                    reach.write + reach.read);
+    const BlockLattice lattice =
+        make_block_lattice(box.lo, box.hi, box.periodic, reach.write + reach.read);
     const double cutoff = lattice.half_width() + reach.read;
     if (!std::isfinite(cutoff))
       host.fail("Fix reinforce/invert: the reach of the relocation is not finite");

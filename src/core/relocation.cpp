@@ -253,8 +253,9 @@ public:
       });
       std::sort(out.begin(), out.end());
       int rebar = 0;
-      out.erase(std::remove_if(out.begin(), out.end(),
-                               [&](const Candidate &c) { return rebar_[c.index] && ++rebar > max_rebar; }),
+      out.erase(std::remove_if(
+                    out.begin(), out.end(),
+                    [&](const Candidate &c) { return rebar_[c.index] && ++rebar > max_rebar; }),
                 out.end());
       // Every view that holds the spheres within `complete` gives the same
       // list up to here: the answer does not depend on the process count.
@@ -272,9 +273,8 @@ public:
       if (k == j || !present_[k] || id_[k] == id_[j]) return;
       if (r_[j] + r_[k] - norm(x_[j] - x_[k]) > limit * std::min(r_[j], r_[k])) out.push_back(k);
     });
-    std::sort(out.begin(), out.end(), [&](int a, int b) {
-      return same_order_everywhere(id_[a], x_[a], id_[b], x_[b]);
-    });
+    std::sort(out.begin(), out.end(),
+              [&](int a, int b) { return same_order_everywhere(id_[a], x_[a], id_[b], x_[b]); });
     return out;
   }
 
@@ -435,8 +435,8 @@ private:
     const int fresh = scene_.add(c, r0, id, true, true);
     const double reach = r0 + 2 * s_.rmax;    // pushed spheres start this close to c
     const double limit = 0.5 * s_.tol, gap = 0.5 * s_.tol;
-    std::map<int, Vec3> start;                        // index -> position before (for undo)
-    std::map<std::int64_t, Vec3> moved;               // id -> displacement in this attempt
+    std::map<int, Vec3> start;             // index -> position before (for undo)
+    std::map<std::int64_t, Vec3> moved;    // id -> displacement in this attempt
     auto origin = [&](int j) {
       auto it = start.find(j);
       return it == start.end() ? scene_.x(j) : it->second;
@@ -651,7 +651,8 @@ std::vector<std::size_t> find_targets(const std::vector<Particle> &particles, do
   std::vector<std::size_t> out;
   double rebar_r = 0, other_r = 0;
   for (const Particle &p : particles)
-    (p.role == Role::Rebar ? rebar_r : other_r) = std::max(p.role == Role::Rebar ? rebar_r : other_r, p.r);
+    (p.role == Role::Rebar ? rebar_r : other_r) =
+        std::max(p.role == Role::Rebar ? rebar_r : other_r, p.r);
   if (!(rebar_r > 0)) return out;
   // Cells sized by the query (matrix radius + rebar radius), not by the
   // rebar alone: thin fibres would make each query span many cells.
@@ -773,7 +774,8 @@ Relocation relocate_targets(const std::vector<Particle> &all, const Settings &se
     result.index = t;
     result.id = target.id;
     int fresh = -1;
-    if (settings.displaced <= 1 && scene.fraction_in_rebar(target.x, target.r) >= settings.displaced) {
+    if (settings.displaced <= 1 &&
+        scene.fraction_in_rebar(target.x, target.r) >= settings.displaced) {
       result.outcome = Outcome::Displaced;
       stats.displaced++;
     } else {
@@ -789,8 +791,8 @@ Relocation relocate_targets(const std::vector<Particle> &all, const Settings &se
         // Present from now on, never pushed; what it overlaps is reported.
         for (int copy : vacant[target.id]) scene.set_present(copy, false);
         stats.max_kept_overlap =
-            std::max(stats.max_kept_overlap, scene.deepest_overlap(static_cast<int>(t), true) /
-                                                 settings.rmin);
+            std::max(stats.max_kept_overlap,
+                     scene.deepest_overlap(static_cast<int>(t), true) / settings.rmin);
       } else {
         stats.volume_removed += ball_volume(target.r);
       }

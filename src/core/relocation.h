@@ -47,9 +47,10 @@ struct Settings {
   double tol = 1e-6;       // spheres overlap when d_ij > tol * min(r_i, r_j)
   int newton_steps = 1;    // Newton polish of each kernel solution
   SizeMode size = SizeMode::Fit;
-  double zone = 0;         // Keep: only matrix spheres within this gap of a bar are pushed
-  double push = 0;         // Keep: largest displacement of a pushed sphere
-  double displaced = 0.5;  // a target with at least this volume fraction inside the bars is deleted
+  double zone = 0;    // Keep: only matrix spheres within this gap of a bar are pushed
+  double push = 0;    // Keep: largest displacement of a pushed sphere
+  double displaced =
+      0.5;    // a target with at least this volume fraction inside the bars is deleted
 };
 
 // Placement domain of one process.
@@ -60,7 +61,7 @@ struct Domain {
   // ghost cutoff): a periodic image of a new sphere is added to the view
   // when its centre falls inside, as the host's own ghost images would be.
   Vec3 view_lo, view_hi;
-  Vec3 sub_lo, sub_hi;    // this process's subdomain, [sub_lo, sub_hi)
+  Vec3 sub_lo, sub_hi;                         // this process's subdomain, [sub_lo, sub_hi)
   std::function<bool(const Vec3 &)> region;    // optional extra test on a new (wrapped) centre
 };
 
@@ -78,13 +79,13 @@ struct Stats {
   std::int64_t targets = 0, relocated = 0, unplaced = 0;
   std::int64_t displaced = 0;    // deleted without search: mostly inside the bars
   double volume_before = 0, volume_after = 0;
-  double volume_removed = 0;    // volume of the targets not put back (deleted or kept)
-  double max_overlap = 0;       // largest overlap of a relocated or pushed sphere, / rmin
-  double max_kept_overlap = 0;  // largest overlap of a kept target with a present sphere, / rmin
-  std::int64_t solves = 0;      // kernel calls
-  std::int64_t pushed = 0;      // spheres pushed (counted once per target that pushed them)
-  double max_push = 0;          // largest displacement of a pushed sphere in one call, / rmin
-  std::int64_t sweeps = 0;      // rearrangement sweeps
+  double volume_removed = 0;      // volume of the targets not put back (deleted or kept)
+  double max_overlap = 0;         // largest overlap of a relocated or pushed sphere, / rmin
+  double max_kept_overlap = 0;    // largest overlap of a kept target with a present sphere, / rmin
+  std::int64_t solves = 0;        // kernel calls
+  std::int64_t pushed = 0;        // spheres pushed (counted once per target that pushed them)
+  double max_push = 0;            // largest displacement of a pushed sphere in one call, / rmin
+  std::int64_t sweeps = 0;        // rearrangement sweeps
   void add(const Stats &o);
 };
 

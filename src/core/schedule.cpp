@@ -33,7 +33,8 @@ int BlockLattice::colour_of(Vec3 x) const
 {
   int b[3];
   block_of(x, b);
-  return (b[0] % colours[0]) + colours[0] * ((b[1] % colours[1]) + colours[1] * (b[2] % colours[2]));
+  return (b[0] % colours[0]) +
+         colours[0] * ((b[1] % colours[1]) + colours[1] * (b[2] % colours[2]));
 }
 
 Vec3 BlockLattice::centre_of(Vec3 x) const

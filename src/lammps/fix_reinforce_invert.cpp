@@ -43,7 +43,6 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
-
 namespace {
 
 // Marks of the per-atom pending flag.
@@ -152,7 +151,10 @@ public:
     return a;
   }
 
-  void set_pending(int local, bool flag) override { f.pending[local] = flag ? kPending : kPresent; }
+  void set_pending(int local, bool flag) override
+  {
+    f.pending[local] = flag ? kPending : kPresent;
+  }
 
   void forward_pending() override
   {
@@ -302,29 +304,35 @@ public:
     return reinforce::mpi_gather_all(mine, f.world);
   }
 
-  double wall_time() override { return MPI_Wtime(); }
+  double wall_time() override
+  {
+    return MPI_Wtime();
+  }
 
   void log(const std::string &line) override
   {
     if (f.comm->me == 0) utils::logmesg(f.lmp, line);
   }
 
-  void fail(const std::string &message) override { f.error->all(FLERR, message); }
+  void fail(const std::string &message) override
+  {
+    f.error->all(FLERR, message);
+  }
 
 private:
   FixReinforceInvert &f;
   double saved_cutghostuser = 0;
   bool raised = false;
-  bool binned = false;    // source-built: bins set up for a raised cutoff
+  bool binned = false;     // source-built: bins set up for a raised cutoff
   std::vector<int> row;    // source-built: list row of each owned atom
   double list_cutoff = 0;
 };
 
 /* ---------------------------------------------------------------------- */
 
-FixReinforceInvert::FixReinforceInvert(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), parsed(new reinforce::FixOptions), options(*parsed),
-    totals(reinforce::kOutputSize, 0.0)
+FixReinforceInvert::FixReinforceInvert(LAMMPS *lmp, int narg, char **arg)
+    : Fix(lmp, narg, arg), parsed(new reinforce::FixOptions), options(*parsed),
+      totals(reinforce::kOutputSize, 0.0)
 {
   std::vector<std::string> args;
   for (int i = 3; i < narg; ++i) args.emplace_back(arg[i]);

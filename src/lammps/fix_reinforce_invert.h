@@ -79,9 +79,9 @@ private:
   int rebar_group = -1, rebar_bit = 0;
   class Region *region = nullptr;
   std::vector<int> pending;
-  bool invoked = false;    // the relocation at the start of the first run is done
+  bool invoked = false;               // the relocation at the start of the first run is done
   class NeighList *list = nullptr;    // source-built: the host's occasional full list
-  std::vector<double> totals;    // f_ID[1..], the latest invocation
+  std::vector<double> totals;         // f_ID[1..], the latest invocation
 
   bool done() const;    // N = 0, relocated once
   void check_styles();

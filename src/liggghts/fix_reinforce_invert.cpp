@@ -157,10 +157,11 @@ void FixReinforceInvert::check_multisphere_bodies()
       mine = (atom->mask[i] & groupbit) && !(atom->mask[i] & rebar_bit_) && ms->belongs_to(i) >= 0;
     MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
     if (any)
-      fail(std::string("Fix reinforce/invert cannot move atoms of rigid bodies: matrix atoms belong "
-                       "to fix ") +
-           modify->fix[ifix]->id + " (" + modify->fix[ifix]->style +
-           "); leave the bodies out of the fix group");
+      fail(
+          std::string("Fix reinforce/invert cannot move atoms of rigid bodies: matrix atoms belong "
+                      "to fix ") +
+          modify->fix[ifix]->id + " (" + modify->fix[ifix]->style +
+          "); leave the bodies out of the fix group");
   }
 }
 

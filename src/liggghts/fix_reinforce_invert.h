@@ -5,9 +5,9 @@
 // tree (dropin/install.sh), where LIGGGHTS's style generator reads the
 // FixStyle block below.
 #ifdef FIX_CLASS
-
+// clang-format off
 FixStyle(reinforce/invert,FixReinforceInvert)
-
+// clang-format on
 #else
 
 #ifndef REINFORCE_LIGGGHTS_FIX_REINFORCE_INVERT_H

@@ -29,10 +29,23 @@ void numeric_arguments(const std::uint8_t *data, std::size_t size)
     std::snprintf(text, sizeof text, "%.17g", x);
     return std::string(text);
   };
-  const std::vector<std::string> args = {
-      "0",         "bars",   "radius",  word(v[0]), word(v[1]), "search",   word(v[2]),
-      "zone",      word(v[3]), "push",  word(v[4]), "tol",      word(v[5]), "displaced",
-      word(v[6]),  "size",   (data[0] & 1) ? "keep" : "fit"};
+  const std::vector<std::string> args = {"0",
+                                         "bars",
+                                         "radius",
+                                         word(v[0]),
+                                         word(v[1]),
+                                         "search",
+                                         word(v[2]),
+                                         "zone",
+                                         word(v[3]),
+                                         "push",
+                                         word(v[4]),
+                                         "tol",
+                                         word(v[5]),
+                                         "displaced",
+                                         word(v[6]),
+                                         "size",
+                                         (data[0] & 1) ? "keep" : "fit"};
   try {
     const FixOptions o = parse_fix_arguments(args);
     if (!(o.tol >= kMinTol && o.tol < 1)) __builtin_trap();
@@ -64,7 +77,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
   if (words.back().empty()) words.pop_back();
   try {
     const FixOptions o = parse_fix_arguments(words);
-    if (o.every < 0 || o.tries <= 0 || !(o.tol >= kMinTol && o.tol < 1) || o.polish < 0 || o.polish > 10)
+    if (o.every < 0 || o.tries <= 0 || !(o.tol >= kMinTol && o.tol < 1) || o.polish < 0 ||
+        o.polish > 10)
       __builtin_trap();
     if (o.radius_set && !(o.rmin > 0 && o.rmin <= o.rmax && std::isfinite(o.rmax)))
       __builtin_trap();

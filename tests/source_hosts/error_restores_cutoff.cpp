@@ -76,8 +76,9 @@ int main(int argc, char **argv)
       message = e.what();
     }
     const double after = lmp->comm->cutghostuser;
-    std::printf("error: %s\nghost cutoff (comm_modify cutoff) before the run %g, after the error %g\n",
-                message.c_str(), before, after);
+    std::printf(
+        "error: %s\nghost cutoff (comm_modify cutoff) before the run %g, after the error %g\n",
+        message.c_str(), before, after);
     if (message.find("an error inside the relocation") == std::string::npos)
       std::printf("FAIL: the run did not stop with the region's error\n");
     else if (after != before)

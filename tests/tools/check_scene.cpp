@@ -42,7 +42,7 @@ struct Atom {
   double x[3] = {0, 0, 0};
   double r = 0;
   double mass = NAN;    // when the dump has a mass column
-  std::string text;    // id, type, x, y, z and radius as written, for --same
+  std::string text;     // id, type, x, y, z and radius as written, for --same
 };
 
 struct Dump {
@@ -51,7 +51,7 @@ struct Dump {
   bool periodic[3] = {false, false, false};
   bool fixed[3] = {false, false, false};    // "ff": a wall at each face
   bool has_mass = false;
-  std::vector<Atom> atoms;                  // sorted by id
+  std::vector<Atom> atoms;    // sorted by id
   std::unordered_map<long, std::size_t> index;
 
   double length(int k) const { return hi[k] - lo[k]; }
@@ -556,8 +556,7 @@ int run_check(Options o)
     std::printf("INFO: largest overlap of a moved sphere with a kept target: %s of rmin "
                 "(max_overlap_kept)\n",
                 num(worst_moved_kept).c_str());
-  }
-  else
+  } else
     check(kept_count == 0, "no matrix sphere overlaps a bar (" + str(kept_count) +
                                " unmoved matrix spheres do; largest " + num(worst_kept) +
                                " of rmin; --kept-ok allows targets left in place)");

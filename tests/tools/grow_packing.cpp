@@ -224,14 +224,14 @@ struct Packer {
   std::vector<double> bx, br;    // rebar centres, radii (frozen)
   bool use_bars = false;
   double rmin = 0, rmax = 0, brmax = 0;
-  double s = 1;                  // current scale of the matrix radii
-  double gap = 0;                // the pushes aim at this clearance
-  double omega = 1;              // over-relaxation of the pushes
+  double s = 1;        // current scale of the matrix radii
+  double gap = 0;      // the pushes aim at this clearance
+  double omega = 1;    // over-relaxation of the pushes
   std::vector<Pair> pairs;
-  std::vector<double> built;     // centres at the last list build
+  std::vector<double> built;    // centres at the last list build
   double s_built = 0, skin = 0;
   Grid grid;
-  std::vector<double> allx;      // matrix then rebar centres, for the grid
+  std::vector<double> allx;    // matrix then rebar centres, for the grid
   long sweeps = 0, builds = 0;
 
   double radius(int j) const { return j < nm ? s * R[j] : br[j - nm]; }
@@ -296,7 +296,8 @@ struct Packer {
       const double *c = &x[3 * i];
       for (int k = 0; k < 3; ++k)
         if (!box.periodic[k])
-          worst = std::max(worst, std::max(box.lo[k] - (c[k] - s * R[i]), c[k] + s * R[i] - box.hi[k]));
+          worst =
+              std::max(worst, std::max(box.lo[k] - (c[k] - s * R[i]), c[k] + s * R[i] - box.hi[k]));
       clamp(i);
     }
     for (const Pair &p : pairs) {
@@ -366,8 +367,8 @@ struct Packer {
     for (int i = 0; i < nm; ++i) {
       for (int k = 0; k < 3; ++k)
         if (!box.periodic[k]) {
-          const double reach = std::max(box.lo[k] - (x[3 * i + k] - R[i]),
-                                        x[3 * i + k] + R[i] - box.hi[k]);
+          const double reach =
+              std::max(box.lo[k] - (x[3 * i + k] - R[i]), x[3 * i + k] + R[i] - box.hi[k]);
           *wall = std::max(*wall, reach / R[i]);
         }
       g.around(&x[3 * i], 1, cells);
@@ -532,10 +533,12 @@ int main(int argc, char **argv)
     cur = nxt;
     ++stages;
     if (verbose)
-      std::fprintf(stderr, "stage %ld: solid fraction %.5f, %ld sweeps, %.2f s\n", stages, cur, used,
-                   seconds());
-    if (used > 400) dphi = std::max(1e-4, dphi * 0.6);
-    else if (used < 100) dphi = std::min(0.03, dphi * 1.25);
+      std::fprintf(stderr, "stage %ld: solid fraction %.5f, %ld sweeps, %.2f s\n", stages, cur,
+                   used, seconds());
+    if (used > 400)
+      dphi = std::max(1e-4, dphi * 0.6);
+    else if (used < 100)
+      dphi = std::min(0.03, dphi * 1.25);
     if (seconds() > max_seconds) break;
   }
   pk.s = 1;
@@ -558,12 +561,12 @@ int main(int argc, char **argv)
     std::printf("grow_packing: %s %ld matrix + %zu rebar spheres, solid fraction %.6f of %s "
                 "(target %.4f), largest overlap / rmin %.3g (/ min(r_i, r_j) %.3g), wall reach / r "
                 "%.3g, %ld stages, %ld sweeps, %ld list builds, %.2f s%s\n",
-                ok ? "ok" : "JAMMED", n, pk.br.size(), phi_actual,
-                around ? "box - bars" : "box", phi, abs_rmin, rel, wall, stages, pk.sweeps,
-                pk.builds, secs, around ? "" : "");
+                ok ? "ok" : "JAMMED", n, pk.br.size(), phi_actual, around ? "box - bars" : "box",
+                phi, abs_rmin, rel, wall, stages, pk.sweeps, pk.builds, secs, around ? "" : "");
   if (around && !quiet)
-    std::printf("grow_packing: union of the rebar spheres %.9g +- %.2g (standard error), box %.9g\n",
-                vbars, vbars_se, vbox);
+    std::printf(
+        "grow_packing: union of the rebar spheres %.9g +- %.2g (standard error), box %.9g\n", vbars,
+        vbars_se, vbox);
   if (!ok) return 1;
 
   FILE *f = std::fopen(argv[1], "w");
@@ -582,8 +585,8 @@ int main(int argc, char **argv)
     std::fprintf(f, "%ld 1 %.17g 2500 %.17g %.17g %.17g\n", i + 1, 2 * pk.R[i], pk.x[3 * i],
                  pk.x[3 * i + 1], pk.x[3 * i + 2]);
   for (std::size_t j = 0; j < nb; ++j)
-    std::fprintf(f, "%zu 2 %.17g 7800 %.17g %.17g %.17g\n", n + j + 1, 2 * pk.br[j],
-                 pk.bx[3 * j], pk.bx[3 * j + 1], pk.bx[3 * j + 2]);
+    std::fprintf(f, "%zu 2 %.17g 7800 %.17g %.17g %.17g\n", n + j + 1, 2 * pk.br[j], pk.bx[3 * j],
+                 pk.bx[3 * j + 1], pk.bx[3 * j + 2]);
   std::fclose(f);
   return 0;
 }

@@ -177,7 +177,8 @@ Scene read_scene(const std::string &path, const bool *data_periodic)
       std::string first;
       if (w >> first && first == "Atoms") break;
     }
-    if (found != 7 || i == lines.size()) bad(path + ": not a dump nor a data file with a box and Atoms");
+    if (found != 7 || i == lines.size())
+      bad(path + ": not a dump nor a data file with a box and Atoms");
     for (++i; i < lines.size(); ++i) {
       std::istringstream a(lines[i]);
       std::vector<std::string> w;
@@ -199,7 +200,8 @@ Scene read_scene(const std::string &path, const bool *data_periodic)
   }
   for (int k = 0; k < 3; ++k)
     if (!(s.hi[k] > s.lo[k])) bad(path + ": empty box");
-  std::sort(s.atoms.begin(), s.atoms.end(), [](const Atom &a, const Atom &b) { return a.id < b.id; });
+  std::sort(s.atoms.begin(), s.atoms.end(),
+            [](const Atom &a, const Atom &b) { return a.id < b.id; });
   return s;
 }
 
@@ -310,7 +312,7 @@ Profile profile(const Scene &s, const Options &o)
   gm.build(s, matrix, 2 * std::max(mrmax, 1e-300));
   const double search = std::max(o.out, o.bulk_from) * o.rmax;    // beyond: "far"
   gb.build(s, rebar, search + brmax);
-  const int mreach = gm.reach_for(mrmax) , breach = gb.reach_for(search + brmax);
+  const int mreach = gm.reach_for(mrmax), breach = gb.reach_for(search + brmax);
   const std::size_t nbins = static_cast<std::size_t>(std::ceil(o.out * o.rmax / o.bin - 1e-9));
   Profile p;
   p.n.assign(nbins, 0);
@@ -460,8 +462,8 @@ int main(int argc, char **argv)
   Options o;
   std::string after_path, before_path, ref_path;
   bool data_periodic[3] = {false, false, false};
-  bool a_shell = false, a_bin = false, a_ks = false, a_moved = false, a_over = false, a_union = false,
-       a_sampling = false;
+  bool a_shell = false, a_bin = false, a_ks = false, a_moved = false, a_over = false,
+       a_union = false, a_sampling = false;
   double shell_lo = 0, shell_hi = 0, bin_max = 0, bin_out = 0, ks_max = 0, over_max = 0,
          union_expect = 0;
   std::string moved_text;
@@ -471,20 +473,34 @@ int main(int argc, char **argv)
   };
   for (int i = 1; i < argc; ++i) {
     const std::string k = argv[i];
-    if (k == "--after") after_path = need(++i);
-    else if (k == "--before") before_path = need(++i);
-    else if (k == "--reference") ref_path = need(++i);
-    else if (k == "--rebar-type") o.rebar_type = std::atoi(need(++i).c_str());
-    else if (k == "--rmin") o.rmin = to_double(need(++i), k);
-    else if (k == "--rmax") o.rmax = to_double(need(++i), k);
-    else if (k == "--bin") o.bin = to_double(need(++i), k);
-    else if (k == "--out") o.out = to_double(need(++i), k);
-    else if (k == "--bulk-from") o.bulk_from = to_double(need(++i), k);
-    else if (k == "--wall-zone") o.wall_zone = to_double(need(++i), k);
-    else if (k == "--points") o.points = static_cast<long>(to_double(need(++i), k));
-    else if (k == "--union-samples") o.union_samples = static_cast<int>(to_double(need(++i), k));
-    else if (k == "--tol") o.tol = to_double(need(++i), k);
-    else if (k == "--quiet-profile") o.quiet_profile = true;
+    if (k == "--after")
+      after_path = need(++i);
+    else if (k == "--before")
+      before_path = need(++i);
+    else if (k == "--reference")
+      ref_path = need(++i);
+    else if (k == "--rebar-type")
+      o.rebar_type = std::atoi(need(++i).c_str());
+    else if (k == "--rmin")
+      o.rmin = to_double(need(++i), k);
+    else if (k == "--rmax")
+      o.rmax = to_double(need(++i), k);
+    else if (k == "--bin")
+      o.bin = to_double(need(++i), k);
+    else if (k == "--out")
+      o.out = to_double(need(++i), k);
+    else if (k == "--bulk-from")
+      o.bulk_from = to_double(need(++i), k);
+    else if (k == "--wall-zone")
+      o.wall_zone = to_double(need(++i), k);
+    else if (k == "--points")
+      o.points = static_cast<long>(to_double(need(++i), k));
+    else if (k == "--union-samples")
+      o.union_samples = static_cast<int>(to_double(need(++i), k));
+    else if (k == "--tol")
+      o.tol = to_double(need(++i), k);
+    else if (k == "--quiet-profile")
+      o.quiet_profile = true;
     else if (k == "--boundary") {
       for (bool &p : data_periodic) {
         const std::string b = need(++i);
@@ -562,7 +578,8 @@ int main(int argc, char **argv)
 
   if (!o.quiet_profile) {
     std::printf("profile (distance from the nearest rebar surface, solid fraction +- standard "
-                "error, points)%s\n", ref_path.empty() ? "" : "; reference");
+                "error, points)%s\n",
+                ref_path.empty() ? "" : "; reference");
     for (std::size_t b = 0; b < pa.n.size(); ++b) {
       std::printf("  [%7.4g, %7.4g) rmax  %.4f +- %.4f  %8ld", b * o.bin / o.rmax,
                   (b + 1) * o.bin / o.rmax, pa.bin_phi(b), Profile::se(pa.bin_phi(b), pa.n[b]),
@@ -599,7 +616,8 @@ int main(int argc, char **argv)
     const double sampled = pa.all_n ? double(pa.all_solid) / pa.all_n : 0;
     const double se = Profile::se(sampled, pa.all_n);
     std::printf("sampling: solid fraction of the box outside the bars %.5f +- %.5f sampled, %.5f "
-                "from the volumes (equal when nothing overlaps)\n", sampled, se, exact);
+                "from the volumes (equal when nothing overlaps)\n",
+                sampled, se, exact);
     if (a_sampling)
       verdict(std::fabs(sampled - exact) <= 4 * se + 1e-12,
               "sampled solid fraction within 4 standard errors of the volumes (|" +
@@ -607,8 +625,8 @@ int main(int argc, char **argv)
   }
   if (a_union)
     verdict(std::fabs(vu - union_expect) <= 4 * vu_se + 1e-15 * union_expect,
-            "union volume " + fmt(vu, "%.9g") + " within 4 standard errors (" +
-                fmt(vu_se, "%.2g") + ") of " + fmt(union_expect, "%.9g"));
+            "union volume " + fmt(vu, "%.9g") + " within 4 standard errors (" + fmt(vu_se, "%.2g") +
+                ") of " + fmt(union_expect, "%.9g"));
 
   if (!before_path.empty()) {
     const Profile pb = profile(before, o);
@@ -618,7 +636,8 @@ int main(int argc, char **argv)
     const double removed = vb - va;
     const double ratio = pb.bulk() > 0 && vu > 0 ? removed / (pb.bulk() * vu) : kFar;
     std::printf("removed: matrix volume %.6g -> %.6g, removed %.6g = %s x (bulk before %.4f x bars "
-                "%.6g)\n", vb, va, removed, fmt(ratio, "%.4f").c_str(), pb.bulk(), vu);
+                "%.6g)\n",
+                vb, va, removed, fmt(ratio, "%.4f").c_str(), pb.bulk(), vu);
     put("removed_ratio", fmt(ratio, "%.4f"));
     const double k = ks(matrix_radii(before, o.rebar_type), matrix_radii(after, o.rebar_type));
     std::printf("radii: two-sample Kolmogorov-Smirnov statistic before/after %.5f\n", k);
@@ -683,12 +702,12 @@ int main(int argc, char **argv)
       if (far > moved_limit) ++beyond;
     }
     std::printf("spheres: %ld targets (matrix on a bar by more than %g min r), %ld of them moved, "
-                "%ld deleted (%ld of them targets)\n", targets, o.tol, moved_targets, deleted,
-                deleted_targets);
+                "%ld deleted (%ld of them targets)\n",
+                targets, o.tol, moved_targets, deleted, deleted_targets);
     std::printf("non-targets moved: %ld, largest displacement %s (%s rmax), farthest from a bar "
-                "(centre to rebar surface, before) %s (%s rmax)\n", moved, fmt(moved_disp).c_str(),
-                fmt(moved_disp / o.rmax, "%.3g").c_str(), fmt(moved_far).c_str(),
-                fmt(moved_far / o.rmax, "%.3g").c_str());
+                "(centre to rebar surface, before) %s (%s rmax)\n",
+                moved, fmt(moved_disp).c_str(), fmt(moved_disp / o.rmax, "%.3g").c_str(),
+                fmt(moved_far).c_str(), fmt(moved_far / o.rmax, "%.3g").c_str());
     put("targets", std::to_string(targets));
     put("deleted", std::to_string(deleted));
     put("moved_nontargets", std::to_string(moved));
@@ -723,16 +742,17 @@ int main(int argc, char **argv)
                 worst_at);
     put("bin_diff_max", fmt(worst, "%.5f"));
     if (a_shell)
-      verdict(diff >= shell_lo && diff <= shell_hi,
-              "shell ratio minus the reference's " + fmt(diff, "%+.4f") + " in [" +
-                  fmt(shell_lo) + ", " + fmt(shell_hi) + "]");
+      verdict(diff >= shell_lo && diff <= shell_hi, "shell ratio minus the reference's " +
+                                                        fmt(diff, "%+.4f") + " in [" +
+                                                        fmt(shell_lo) + ", " + fmt(shell_hi) + "]");
     if (a_over)
-      verdict(diff <= over_max, "shell ratio minus the reference's " + fmt(diff, "%+.4f") +
-                                    " <= " + fmt(over_max));
+      verdict(diff <= over_max,
+              "shell ratio minus the reference's " + fmt(diff, "%+.4f") + " <= " + fmt(over_max));
     if (a_bin)
-      verdict(worst <= bin_max, "no profile bin out to " + fmt(bin_out) + " rmax differs from the "
-                                "reference by more than " + fmt(bin_max) + " (largest " +
-                                fmt(worst, "%.4f") + ")");
+      verdict(worst <= bin_max, "no profile bin out to " + fmt(bin_out) +
+                                    " rmax differs from the "
+                                    "reference by more than " +
+                                    fmt(bin_max) + " (largest " + fmt(worst, "%.4f") + ")");
   }
   std::printf("QUALITY");
   for (const auto &s : kv) std::printf(" %s", s.c_str());

@@ -23,14 +23,14 @@ Fix *create_fix_reinforce_invert(LAMMPS *lmp, int narg, char **arg)
 extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
 {
   lammpsplugin_t plugin;
-  auto register_plugin = (lammpsplugin_regfunc) regfunc;
+  auto register_plugin = (lammpsplugin_regfunc)regfunc;
 
   plugin.version = LAMMPS_VERSION;
   plugin.style = "fix";
   plugin.name = "reinforce/invert";
   plugin.info = "fix reinforce/invert: relocates matrix spheres overlapping reinforcement bars";
   plugin.author = "reinforce/invert project";
-  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_reinforce_invert;
+  plugin.creator.v2 = (lammpsplugin_factory2 *)&create_fix_reinforce_invert;
   plugin.handle = handle;
   (*register_plugin)(&plugin, lmp);
 }
