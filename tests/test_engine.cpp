@@ -222,6 +222,56 @@ TEST(Engine, KeepModeKeepsRadiiAndMakesRoom)
   EXPECT_NEAR(removed, stats.volume_removed, 1e-12);
 }
 
+// size keep without pushing (the default): a target keeps its radius
+// where a void tangent to three spheres holds it, else takes the void it
+// fits (the paper's placement); nothing else moves, nothing overlaps, and
+// the largest targets go first. On this sparse packing most keep their
+// radius, and the radii change less than with size fit.
+TEST(Engine, KeepModeWithoutPushKeepsRadiiWhereAVoidHoldsThem)
+{
+  Scene s = make_scene(1);
+  Settings st = default_settings();
+  st.push = 0;
+  st.displaced = 2;
+  mark(s, st.tol);
+  Stats stats;
+  const Relocation rel = relocate_targets(s.particles, st, s.domain, false, stats);
+  ASSERT_GT(stats.targets, 10);
+  EXPECT_TRUE(rel.pushes.empty());
+  EXPECT_EQ(stats.pushed, 0);
+  EXPECT_EQ(stats.sweeps, 0);
+  const std::vector<Particle> after = apply(s, rel, false);
+  EXPECT_LE(worst_overlap_of_moved(after, s), st.tol);
+  int own = 0;
+  double previous = INFINITY;
+  for (const TargetResult &t : rel.targets) {
+    const Particle &before = s.particles[t.index];
+    EXPECT_LE(before.r, previous);    // largest first
+    previous = before.r;
+    if (t.outcome != Outcome::Placed) continue;
+    EXPECT_LE(norm(t.x - before.x), before.r + st.search + 1e-12);
+    if (t.r == before.r) {
+      ++own;
+    } else {
+      EXPECT_GE(t.r, st.rmin);
+      EXPECT_LE(t.r, st.rmax);
+    }
+  }
+  EXPECT_GT(own, stats.targets / 2);
+  // The radii change less than with size fit (which takes each void's).
+  Settings fit = st;
+  fit.size = SizeMode::Fit;
+  Stats fit_stats;
+  const Relocation fitted = relocate_targets(s.particles, fit, s.domain, false, fit_stats);
+  auto radius_change = [&](const Relocation &r) {
+    double sum = 0;
+    for (const TargetResult &t : r.targets)
+      if (t.outcome == Outcome::Placed) sum += std::fabs(t.r - s.particles[t.index].r);
+    return sum;
+  };
+  EXPECT_LT(radius_change(rel), 0.5 * radius_change(fitted));
+}
+
 TEST(Engine, TargetsAreExactlyTheSpheresOverlappingRebar)
 {
   Scene s = make_scene(2);

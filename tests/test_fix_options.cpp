@@ -34,19 +34,23 @@ TEST(FixOptions, Defaults)
   EXPECT_FALSE(o.keep_unplaced);
   EXPECT_EQ(o.tol, 1e-6);
   EXPECT_EQ(o.polish, 1);
-  EXPECT_EQ(o.size, SizeMode::Fit);
+  EXPECT_EQ(o.size, SizeMode::Keep);
   EXPECT_FALSE(o.displaced_set);
   const Settings s = make_settings(o, 0.1, 0.3, 100);
   EXPECT_EQ(s.rmin, 0.1);
   EXPECT_EQ(s.rmax, 0.3);
   EXPECT_DOUBLE_EQ(s.search, 0.6);
   EXPECT_DOUBLE_EQ(s.zone, 0.9);
-  EXPECT_DOUBLE_EQ(s.push, 0.3);
-  EXPECT_EQ(s.size, SizeMode::Fit);
-  EXPECT_GT(s.displaced, 1);    // size fit tries every target
-  EXPECT_EQ(
-      make_settings(parse_fix_arguments({"0", "bars", "size", "keep"}), 0.1, 0.3, 100).displaced,
-      0.5);
+  EXPECT_EQ(s.push, 0);    // no pushing unless asked
+  EXPECT_EQ(s.size, SizeMode::Keep);
+  EXPECT_GT(s.displaced, 1);    // every target is tried
+  EXPECT_GT(
+      make_settings(parse_fix_arguments({"0", "bars", "size", "fit"}), 0.1, 0.3, 100).displaced, 1);
+  EXPECT_EQ(make_settings(parse_fix_arguments({"0", "bars", "displaced", "0.5"}), 0.1, 0.3, 100)
+                .displaced,
+            0.5);
+  EXPECT_DOUBLE_EQ(
+      make_settings(parse_fix_arguments({"0", "bars", "push", "0.1"}), 0.1, 0.3, 100).push, 0.1);
 }
 
 // Gaps, pushes and radii larger than the box are capped at its diagonal, so

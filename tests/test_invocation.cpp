@@ -284,7 +284,7 @@ TEST(Invocation, MonodisperseFitSaysSo)
   fill(h, 7);
   for (std::size_t i = 0; i < h.mask.size(); ++i)
     if (!(h.mask[i] & kRebar)) h.radius[i] = 0.03;
-  run_invocation(h, parse_fix_arguments({"0", "bars"}));
+  run_invocation(h, parse_fix_arguments({"0", "bars", "size", "fit"}));
   bool said = false;
   for (const std::string &line : h.logged)
     said = said || (line.find("single radius") != std::string::npos &&
@@ -292,7 +292,7 @@ TEST(Invocation, MonodisperseFitSaysSo)
   EXPECT_TRUE(said);
   MemoryHost k;
   fill(k, 7);
-  run_invocation(k, parse_fix_arguments({"0", "bars"}));    // radii spread: no such line
+  run_invocation(k, parse_fix_arguments({"0", "bars", "size", "fit"}));    // radii spread: none
   for (const std::string &line : k.logged) EXPECT_EQ(line.find("single radius"), std::string::npos);
 }
 

@@ -377,3 +377,81 @@ TEST(Kernel, MillionRandomQuadruplesMeetTheContract)
   }
   EXPECT_GT(solutions, 100000);    // the test exercises solutions, not only rejections
 }
+
+// A sphere of given radius tangent to three: random known spheres with three
+// neighbours touching them are recovered (tolerance 1e-9 of r: the contract
+// of centres_tangent_to_three, well above the rounding of a few operations
+// on scaled coordinates), from micro to large scales and far from the
+// origin; the second solution is tangent too.
+TEST(Kernel, ThreeTangentRecoversKnownSphere)
+{
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> unif(1.0, 3.0);
+  int tried = 0, missed = 0;
+  for (double scale : {1e-9, 1.0, 1e6})
+    for (double offset : {0.0, 1e3}) {
+      for (int draw = 0; draw < 3000; ++draw) {
+        Vec3 dir[3];
+        for (Vec3 &d : dir) d = random_unit(rng);
+        // Not nearly collinear centres: directions well apart.
+        bool spread = true;
+        for (int i = 0; i < 3; ++i)
+          for (int j = i + 1; j < 3; ++j) spread = spread && dot(dir[i], dir[j]) < std::cos(0.35);
+        if (!spread) continue;
+        ++tried;
+        const Sphere known{scale * Vec3{unif(rng) + offset, -unif(rng), unif(rng)},
+                           scale * unif(rng)};
+        Sphere in[3];
+        for (int i = 0; i < 3; ++i) {
+          const double ri = scale * unif(rng);
+          in[i] = {known.c + (known.r + ri) * dir[i], ri};
+        }
+        Vec3 out[2];
+        const int n = centres_tangent_to_three(in, known.r, out);
+        double best = INFINITY;
+        for (int k = 0; k < n; ++k) {
+          ASSERT_TRUE(is_finite(out[k]));
+          for (int i = 0; i < 3; ++i)
+            EXPECT_NEAR(norm(out[k] - in[i].c), in[i].r + known.r, 1e-9 * (in[i].r + known.r));
+          best = std::min(best, norm(out[k] - known.c) / known.r);
+        }
+        if (!(best <= 1e-9)) ++missed;
+      }
+    }
+  EXPECT_GT(tried, 5000);
+  EXPECT_EQ(missed, 0);
+}
+
+// Degenerate and extreme inputs give nothing, never NaN or infinity:
+// coincident or collinear centres, spheres too far apart, NaN, infinity,
+// negative or zero radii, coordinates whose differences overflow.
+TEST(Kernel, ThreeTangentDegenerateInputsGiveNothing)
+{
+  const double nan = std::nan(""), inf = INFINITY;
+  struct Case {
+    Sphere in[3];
+    double r;
+  };
+  const Case cases[] = {
+      {{{{0, 0, 0}, 1}, {{0, 0, 0}, 1}, {{0, 0, 0}, 1}}, 1},        // coincident
+      {{{{0, 0, 0}, 1}, {{1, 0, 0}, 1}, {{2, 0, 0}, 1}}, 1},        // collinear
+      {{{{0, 0, 0}, 1}, {{100, 0, 0}, 1}, {{0, 100, 0}, 1}}, 1},    // too far apart
+      {{{{0, 0, 0}, 1}, {{2, 0, 0}, 1}, {{0, 2, nan}, 1}}, 1},      // NaN
+      {{{{0, 0, 0}, 1}, {{2, 0, 0}, 1}, {{0, 2, inf}, 1}}, 1},      // infinity
+      {{{{0, 0, 0}, 1}, {{2, 0, 0}, -1}, {{0, 2, 0}, 1}}, 1},       // negative radius
+      {{{{0, 0, 0}, 1}, {{2, 0, 0}, 1}, {{0, 2, 0}, 1}}, 0},        // zero radius asked
+      {{{{0, 0, 0}, 1}, {{2, 0, 0}, 1}, {{0, 2, 0}, 1}}, -1},       // negative radius asked
+      {{{{0, 0, 0}, 1}, {{2, 0, 0}, 1}, {{0, 2, 0}, 1}}, nan},      // NaN radius asked
+      {{{{-1e308, 0, 0}, 1}, {{1e308, 0, 0}, 1}, {{0, 1e308, 0}, 1}}, 1},    // overflow
+  };
+  for (const Case &c : cases) {
+    Vec3 out[2] = {{nan, nan, nan}, {nan, nan, nan}};
+    EXPECT_EQ(centres_tangent_to_three(c.in, c.r, out), 0);
+  }
+  // Touching at one point only: one solution (the two coincide).
+  const Sphere touch[3] = {{{0, 0, 0}, 1}, {{4, 0, 0}, 1}, {{2, 2, 0}, 1}};
+  Vec3 out[2];
+  const int n = centres_tangent_to_three(touch, 1, out);
+  ASSERT_EQ(n, 1);
+  EXPECT_NEAR(norm(out[0] - Vec3{2, 0, 0}), 0, 1e-12);
+}

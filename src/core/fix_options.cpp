@@ -165,16 +165,16 @@ Settings make_settings(const FixOptions &o, double matrix_rmin, double matrix_rm
   s.rmin = std::min(s.rmin, s.rmax);
   s.search = std::min(o.search_set ? o.search : 2 * s.rmax, bound);
   s.zone = std::min(o.zone_set ? o.zone : 3 * s.rmax, bound);
-  s.push = std::min(o.push_set ? o.push : s.rmax, bound);
+  s.push = std::min(o.push_set ? o.push : 0.0, bound);
   s.tries = o.tries;
   s.choice = o.choice;
   s.tol = o.tol;
   s.newton_steps = o.polish;
   s.size = o.size;
-  // `unplaced keep` deletes nothing: every target is tried. size fit (the
-  // seed paper) tries every target unless told otherwise.
-  s.displaced =
-      o.keep_unplaced ? 2 : (o.displaced_set || o.size == SizeMode::Keep ? o.displaced : 2);
+  // Every target is tried unless told otherwise (`unplaced keep`: always):
+  // measured, deleting the spheres mostly inside the bars leaves the shell
+  // hollower than putting them in the voids near it (docs/design.md).
+  s.displaced = o.keep_unplaced ? 2 : (o.displaced_set ? o.displaced : 2);
   return s;
 }
 

@@ -29,12 +29,12 @@ struct FixOptions {
   std::string region;    // empty: no region test
   double tol = 1e-6;
   int polish = 1;
-  SizeMode size = SizeMode::Fit;
+  SizeMode size = SizeMode::Keep;
   bool zone_set = false;    // else 3 * rmax
   double zone = 0;
-  bool push_set = false;    // else rmax
+  bool push_set = false;    // else 0: no pushing
   double push = 0;
-  bool displaced_set = false;    // else 0.5 with size keep, never with size fit
+  bool displaced_set = false;    // else never
   double displaced = 0.5;
 };
 

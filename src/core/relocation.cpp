@@ -79,6 +79,27 @@ std::size_t candidates_needed(int tries)
   }
 }
 
+// The smallest n with C(n, 3) >= tries.
+std::size_t candidates_needed_for_triples(int tries)
+{
+  std::size_t n = 3;
+  while (static_cast<double>(n) * (n - 1) * (n - 2) / 6 < tries) ++n;
+  return n;
+}
+
+// Calls f(a, b, c) for the triples of [0, n) in colex order (all triples of
+// the k nearest before any using the (k+1)-th), at most `limit` of them or
+// until f returns true.
+template <class F> void for_each_triple(int n, int limit, F &&f)
+{
+  int done = 0;
+  for (int c = 2; c < n; ++c)
+    for (int b = 1; b < c; ++b)
+      for (int a = 0; a < b; ++a) {
+        if (done++ >= limit || f(a, b, c)) return;
+      }
+}
+
 // Calls f(a, b, c, d) for the groups of four of [0, n) in colex order (all
 // groups of the k nearest before any group using the (k+1)-th), at most
 // `limit` groups or until f returns true.
@@ -321,22 +342,24 @@ public:
     const Vec3 x0 = scene_.x(t);
     const double r0 = scene_.r(t);
     const std::int64_t id = scene_.id(t);
-    if (s_.size == SizeMode::Fit) {
-      Void v;
-      if (!best_fit(x0, r0, v)) return -1;
-      return commit(scene_.add(v.c, v.r, id, true, true));
+    if (s_.size == SizeMode::Keep) {
+      // Its own radius, in a void that holds it as it is;
+      Void own;
+      if (own_size_void(x0, r0, own)) return commit(scene_.add(own.c, r0, id, true, true));
+      // with `push`, where room can be made: first its own place, pushed
+      // out of the bars, its neighbours pushed on (it was part of the
+      // packing, so that disturbs least), then the voids the inversion
+      // finds nearby;
+      if (s_.push > 0) {
+        const int in_place = make_room(x0, x0, r0, id, pushes);
+        if (in_place >= 0) return commit(in_place);
+        for (const Void &v : find_voids(x0, r0)) {
+          const int fresh = make_room(v.c, x0, r0, id, pushes);
+          if (fresh >= 0) return commit(fresh);
+        }
+      }
     }
-    // First its own place: pushed out of the bars, its neighbours pushed
-    // on (it was part of the packing, so that disturbs least); then the
-    // voids the inversion finds nearby.
-    const int in_place = make_room(x0, x0, r0, id, pushes);
-    if (in_place >= 0) return commit(in_place);
-    std::vector<Void> voids = find_voids(x0, r0);
-    for (const Void &v : voids) {
-      const int fresh = make_room(v.c, x0, r0, id, pushes);
-      if (fresh >= 0) return commit(fresh);
-    }
-    // Jammed around it: the seed paper's placement, in the void it fits.
+    // else the seed paper's placement, in the void it fits.
     Void v;
     if (!best_fit(x0, r0, v)) return -1;
     return commit(scene_.add(v.c, v.r, id, true, true));
@@ -375,6 +398,39 @@ private:
       }
       return false;
     });
+  }
+
+  // A place for a sphere of the target's own radius r0: tangent to three
+  // present spheres among the candidates of its old sphere (the kernel of
+  // centres_tangent_to_three), wholly admissible, overlapping nothing, its
+  // centre within r0 + search of the old one; the nearest to the old centre
+  // of the first `tries` triples.
+  bool own_size_void(Vec3 x0, double r0, Void &best)
+  {
+    const std::vector<Candidate> near = scene_.candidates(
+        x0, r0, s_.search, candidates_needed_for_triples(s_.tries), kMaxRebarCandidates);
+    const double max_shift = r0 + s_.search;
+    best.score = INFINITY;
+    for_each_triple(static_cast<int>(near.size()), s_.tries, [&](int a, int b, int c) {
+      const Sphere group[3] = {scene_.sphere(near[a].index), scene_.sphere(near[b].index),
+                               scene_.sphere(near[c].index)};
+      // Two spheres whose gap exceeds 2 r0 cannot both touch it.
+      for (int i = 0; i < 3; ++i)
+        for (int j = i + 1; j < 3; ++j)
+          if (norm(group[i].c - group[j].c) - group[i].r - group[j].r > 2 * r0) return false;
+      Vec3 found[2];
+      const int nfound = centres_tangent_to_three(group, r0, found);
+      stats_.solves++;
+      for (int k = 0; k < nfound; ++k) {
+        const double shift = norm(found[k] - x0);
+        if (shift > max_shift || shift >= best.score || !admissible(found[k], r0, domain_))
+          continue;
+        double deepest;
+        if (scene_.fits(found[k], r0, s_.tol, deepest)) best = {found[k], r0, shift};
+      }
+      return false;
+    });
+    return best.score < INFINITY;
   }
 
   // The seed paper's placement: a tangent sphere with its radius in
@@ -584,7 +640,7 @@ Footprint footprint(const Settings &s, double target_rmax, double largest_r)
   Footprint f;
   // A new centre stays within target_r + search of the old one.
   const double placed = target_rmax + s.search;
-  if (s.size == SizeMode::Fit) {
+  if (s.size == SizeMode::Fit || !(s.push > 0)) {
     f.write = placed;
     f.read = placed + s.rmax + largest_r;
     return f;
@@ -758,11 +814,18 @@ Relocation relocate_targets(const std::vector<Particle> &all, const Settings &se
     if (mine ? mine(p) : p.owned) targets.push_back(i);
   }
   if (targets.empty()) return out;
+  // size keep: largest first, so that the voids that hold a sphere as it is
+  // go to the spheres that need them most (a smaller one may still find a
+  // void of its own size after). The order among the targets of one block
+  // of the schedule is the same whichever process relocates it.
+  const bool largest_first = settings.size == SizeMode::Keep;
   std::sort(targets.begin(), targets.end(), [&](std::size_t a, std::size_t b) {
+    if (largest_first && particles[a].r != particles[b].r) return particles[a].r > particles[b].r;
     return same_order_everywhere(particles[a].id, particles[a].x, particles[b].id, particles[b].x);
   });
 
-  Scene scene(particles, 2 * largest_r, settings.size == SizeMode::Keep ? settings.zone : -1);
+  Scene scene(particles, 2 * largest_r,
+              settings.size == SizeMode::Keep && settings.push > 0 ? settings.zone : -1);
   Relocator relocator(scene, settings, domain, stats);
   std::map<std::int64_t, Vec3> pushes;
   std::vector<int> placed_at;    // the new sphere's index, per placed result

@@ -33,10 +33,10 @@ struct Particle {
 
 enum class Choice { First, Closest };
 
-// How a target is put back: with the radius of the void it fits, within
-// [rmin, rmax], as in the seed paper (Fit, the default), or with its own
-// radius, making room where the void is too small (Keep; where that fails,
-// as Fit).
+// How a target is put back: with its own radius where a void holds it
+// (tangent to three spheres), or where room can be made by pushing (push >
+// 0), else as Fit (Keep, the default); or with the radius of the void it
+// fits, within [rmin, rmax], as in the seed paper (Fit).
 enum class SizeMode { Keep, Fit };
 
 struct Settings {
@@ -48,7 +48,7 @@ struct Settings {
   int newton_steps = 1;    // Newton polish of each kernel solution
   SizeMode size = SizeMode::Fit;
   double zone = 0;    // Keep: only matrix spheres within this gap of a bar are pushed
-  double push = 0;    // Keep: largest displacement of a pushed sphere
+  double push = 0;    // Keep: largest displacement of a pushed sphere (0: no pushing)
   double displaced =
       0.5;    // a target with at least this volume fraction inside the bars is deleted
 };
@@ -124,12 +124,13 @@ struct Push {
   Vec3 dx;
 };
 struct Relocation {
-  std::vector<TargetResult> targets;    // in the order they were relocated (increasing id)
+  std::vector<TargetResult> targets;    // in the order they were relocated
   std::vector<Push> pushes;             // increasing id; none of the targets above
 };
 
 // Relocates the Target particles for which `mine` is true (default: the
-// owned ones), in increasing id order. Particles with role Target are
+// owned ones), in increasing id order (size keep: largest first, then by
+// id). Particles with role Target are
 // vacant, all others present. A relocated sphere is present for the targets
 // after it. With keep_unplaced, a target that found no place stays where it
 // is, present and never pushed.

@@ -275,4 +275,45 @@ int tangent_spheres_algebraic(const Sphere in[4], Sphere out[2], int newton_step
   return sorted(out, count);
 }
 
+int centres_tangent_to_three(const Sphere in[3], double r, Vec3 out[2])
+{
+  if (!(r > 0) || !std::isfinite(r)) return 0;
+  for (int k = 0; k < 3; ++k)
+    if (!(in[k].r >= 0) || !std::isfinite(in[k].r) || !is_finite(in[k].c)) return 0;
+  const double d1 = in[0].r + r, d2 = in[1].r + r, d3 = in[2].r + r;
+  const Vec3 u = in[1].c - in[0].c, v = in[2].c - in[0].c;
+  const double scale = std::max({norm(u), norm(v), d1, d2, d3});
+  if (!(scale > 0) || !std::isfinite(scale)) return 0;
+  const double inv = 1 / scale;
+  // Frame: e1 along u, e2 in the plane of the centres, e3 normal to it.
+  const Vec3 us = inv * u, vs = inv * v;
+  const double a = norm(us);
+  if (!(a > 1e-9)) return 0;
+  const Vec3 e1 = (1 / a) * us;
+  const double i = dot(e1, vs);
+  const Vec3 w = vs - i * e1;
+  const double j = norm(w);
+  if (!(j > 1e-9)) return 0;
+  const Vec3 e2 = (1 / j) * w, e3 = cross(e1, e2);
+  const double s1 = d1 * inv, s2 = d2 * inv, s3 = d3 * inv;
+  const double x = (s1 * s1 - s2 * s2 + a * a) / (2 * a);
+  const double y = (s1 * s1 - s3 * s3 + i * i + j * j) / (2 * j) - i * x / j;
+  const double z2 = s1 * s1 - x * x - y * y;
+  if (!(z2 >= -1e-12)) return 0;
+  // Two solutions closer than 1e-6 of the scale are one (their tangency
+  // differs by z^2 / 2, below 1e-12).
+  const double z = z2 > 1e-12 ? std::sqrt(z2) : 0;
+  int n = 0;
+  for (int sign : {1, -1}) {
+    if (sign < 0 && z == 0) break;
+    const Vec3 c = in[0].c + scale * (x * e1 + y * e2 + (sign * z) * e3);
+    if (!is_finite(c)) continue;
+    bool tangent = true;
+    for (int k = 0; k < 3; ++k)
+      tangent = tangent && std::fabs(norm(c - in[k].c) - (in[k].r + r)) <= 1e-9 * (in[k].r + r);
+    if (tangent) out[n++] = c;
+  }
+  return n;
+}
+
 }    // namespace reinforce

@@ -37,4 +37,15 @@ int tangent_spheres_algebraic(const Sphere in[4], Sphere out[2], int newton_step
 // while the residual decreases; returns true if s was improved or kept finite.
 bool polish_tangent_sphere(const Sphere in[4], Sphere &s, int steps);
 
+// Centres of a sphere of given radius r externally tangent to three spheres:
+// the points at distance r + r_i from each centre c_i (trilateration), used
+// to put a sphere back with its own radius. Works in coordinates relative to
+// the first centre, scaled by the largest distance. Returns 0 for r <= 0, a
+// negative or non-finite input, centres nearly collinear (relative 1e-9), or
+// spheres too far apart to be touched at once; 1 when the two solutions
+// coincide (within 1e-6 of the scale); else 2. Every point returned is
+// finite and its distances match r + r_i to 1e-9 (r + r_i); others are
+// dropped.
+int centres_tangent_to_three(const Sphere in[3], double r, Vec3 out[2]);
+
 }    // namespace reinforce
