@@ -54,6 +54,43 @@ bool in_subdomain(Vec3 x, const Domain &d)
   return true;
 }
 
+// A centre wrapped into the box in its periodic dimensions, as the host
+// wraps an atom that left the box.
+Vec3 wrapped_centre(Vec3 c, const Domain &d)
+{
+  for (int k = 0; k < 3; ++k) {
+    if (!d.periodic[k]) continue;
+    const double period = d.hi[k] - d.lo[k];
+    if (c[k] < d.lo[k]) c[k] += period;
+    if (c[k] >= d.hi[k]) c[k] -= period;
+    if (c[k] < d.lo[k] || c[k] >= d.hi[k])    // far out, or rounding at an edge
+      c[k] = std::min(std::max(d.lo[k], c[k] - period * std::floor((c[k] - d.lo[k]) / period)),
+                      std::nextafter(d.hi[k], d.lo[k]));
+  }
+  return c;
+}
+
+// The centre and its periodic images (shifted by one box length) that lie
+// inside this process's view, as the host's ghosts would.
+std::vector<Vec3> images_in_view(Vec3 c, const Domain &d)
+{
+  std::vector<Vec3> out;
+  for (int i = -1; i <= 1; ++i)
+    for (int j = -1; j <= 1; ++j)
+      for (int k = -1; k <= 1; ++k) {
+        const int shift[3] = {i, j, k};
+        Vec3 image = c;
+        bool inside = true;
+        for (int m = 0; m < 3 && inside; ++m) {
+          if (shift[m] != 0 && !d.periodic[m]) inside = false;
+          image[m] += shift[m] * (d.hi[m] - d.lo[m]);
+          inside = inside && image[m] >= d.view_lo[m] && image[m] <= d.view_hi[m];
+        }
+        if (inside) out.push_back(image);
+      }
+  return out;
+}
+
 std::string format(const char *fmt, double a, double b = 0)
 {
   char line[300];
@@ -61,13 +98,14 @@ std::string format(const char *fmt, double a, double b = 0)
   return line;
 }
 
-// Sends every round's results to the owners of the atoms: [id, what, x, y,
-// z, r] records, what = 0 placed, 1 deleted, 2 kept, 3 pushed (x = the
-// displacement). Each owner applies those of its atoms.
+// Every round's results go to every process by atom ID as [id, what, x, y,
+// z, r] records, what = 0 placed (x: new centre, in the frame of the
+// target's in-box copy), 1 deleted, 2 kept, 3 pushed (x: the displacement).
+// The owner of an atom applies them to the host's atom; every process
+// applies them to its view, so that the next round needs no migration and
+// no new ghosts from the host.
 constexpr int kRecord = 6;
-void deliver(HostHooks &host, const AtomArrays &a, const std::vector<Particle> &view,
-             const std::vector<int> &local, const Relocation &rel, bool keep_unplaced,
-             std::vector<int> &doomed)
+std::vector<double> share_results(HostHooks &host, const Relocation &rel, bool keep_unplaced)
 {
   std::vector<double> mine;
   for (const TargetResult &t : rel.targets) {
@@ -76,11 +114,15 @@ void deliver(HostHooks &host, const AtomArrays &a, const std::vector<Particle> &
   }
   for (const Push &p : rel.pushes)
     mine.insert(mine.end(), {static_cast<double>(p.id), 3, p.dx.x, p.dx.y, p.dx.z, 0});
-  const std::vector<double> all = host.gather_all(mine);
-  if (all.empty()) return;
-  std::unordered_map<std::int64_t, int> owned;    // id -> local index of the owned atom
-  for (std::size_t k = 0; k < view.size(); ++k)
-    if (view[k].owned) owned[view[k].id] = local[k];
+  return host.gather_all(mine);
+}
+
+// The owned atoms' part: moves, kept flags, and the atoms to delete (removed
+// by the caller after the last round, so local indices stay valid).
+void apply_to_host(HostHooks &host, const AtomArrays &a,
+                   const std::unordered_map<std::int64_t, int> &owned,
+                   const std::vector<double> &all, std::vector<int> &doomed)
+{
   for (std::size_t k = 0; k + kRecord <= all.size(); k += kRecord) {
     auto it = owned.find(static_cast<std::int64_t>(all[k]));
     if (it == owned.end()) continue;
@@ -97,6 +139,62 @@ void deliver(HostHooks &host, const AtomArrays &a, const std::vector<Particle> &
       host.move(i, Vec3{a.x[i][0], a.x[i][1], a.x[i][2]} + v, a.radius[i]);
     }
   }
+}
+
+// The view's part, as the host would give it after migrating the atoms
+// and rebuilding the ghosts: a moved atom's copies are replaced by its
+// wrapped centre and the periodic images of it inside this process's view;
+// a deleted one's copies go; a kept one becomes present.
+void apply_to_view(const std::vector<double> &all, const Domain &domain,
+                   std::vector<Particle> &view)
+{
+  if (all.empty()) return;
+  std::unordered_map<std::int64_t, std::vector<std::size_t>> copies;
+  for (std::size_t k = 0; k < view.size(); ++k) copies[view[k].id].push_back(k);
+  std::vector<bool> gone(view.size(), false);
+  std::vector<Particle> added;
+  for (std::size_t k = 0; k + kRecord <= all.size(); k += kRecord) {
+    const std::int64_t id = static_cast<std::int64_t>(all[k]);
+    const int what = static_cast<int>(all[k + 1]);
+    const Vec3 v{all[k + 2], all[k + 3], all[k + 4]};
+    auto it = copies.find(id);
+    const std::vector<std::size_t> none;
+    const std::vector<std::size_t> &mine = it == copies.end() ? none : it->second;
+    if (what == 2) {
+      for (std::size_t c : mine) view[c].role = Role::Matrix;
+      continue;
+    }
+    if (mine.empty() && what != 0) continue;    // neither seen nor to be seen here
+    Particle moved;
+    if (!mine.empty()) moved = view[mine.front()];
+    // The in-box copy, if this process has it, is where a push starts.
+    for (std::size_t c : mine)
+      if (in_box(view[c].x, domain)) moved = view[c];
+    for (std::size_t c : mine) gone[c] = true;
+    if (what == 1) continue;
+    if (what == 0) {
+      moved.id = id;
+      moved.x = v;
+      moved.r = all[k + 5];
+      moved.role = Role::Matrix;
+      moved.pushable = true;    // a target is a matrix atom of the fix group
+      if (mine.empty()) moved.owned = false;
+    } else {
+      moved.x = moved.x + v;
+    }
+    for (const Vec3 &image : images_in_view(wrapped_centre(moved.x, domain), domain)) {
+      Particle p = moved;
+      p.x = image;
+      p.owned = false;
+      added.push_back(p);
+    }
+  }
+  std::vector<Particle> next;
+  next.reserve(view.size() + added.size());
+  for (std::size_t k = 0; k < view.size(); ++k)
+    if (!gone[k]) next.push_back(view[k]);
+  next.insert(next.end(), added.begin(), added.end());
+  view.swap(next);
 }
 
 }    // namespace
@@ -217,15 +315,13 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
     }
 
     const Domain domain = host.placement_domain();
-    bool fresh_view = true;
+    std::unordered_map<std::int64_t, int> owned;    // id -> local index of the owned atom
+    for (std::size_t k = 0; k < view.size(); ++k)
+      if (view[k].owned) owned[view[k].id] = local[k];
+    std::vector<int> doomed;
+    double busiest = 0, processes = 1;
     for (int colour = 0; colour < lattice.rounds(); ++colour) {
       if (per_colour[colour] == 0) continue;
-      if (!fresh_view) {    // the previous round moved and deleted atoms
-        host.refresh();
-        a = host.atoms();
-        view = make_view(a, margin, local);
-      }
-      fresh_view = false;
       totals.rounds++;
       // Each target is relocated by the process that owns its block's centre.
       auto mine = [&](const Particle &p) {
@@ -234,9 +330,25 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
       };
       const Relocation rel =
           relocate_targets(view, settings, domain, options.keep_unplaced, totals.stats, mine);
-      std::vector<int> doomed;
-      deliver(host, a, view, local, rel, options.keep_unplaced, doomed);
-      host.remove(doomed);
+      // Per-process work of the round: the busiest process sets its time.
+      const double here = static_cast<double>(rel.targets.size());
+      busiest += host.max(here);
+      processes = host.sum(1.0);
+      const std::vector<double> all = share_results(host, rel, options.keep_unplaced);
+      apply_to_host(host, a, owned, all, doomed);
+      apply_to_view(all, domain, view);
+    }
+    host.remove(doomed);
+    const double targets = host.sum(static_cast<double>(totals.stats.targets));
+    if (totals.rounds > 0) {
+      // Balance: the targets over what the busiest process of each round
+      // would do if every process were as busy (1 = even).
+      char line[300];
+      std::snprintf(line, sizeof line,
+                    "fix reinforce/invert: schedule: %d rounds, %.0f targets, busiest process "
+                    "%.0f targets over the rounds, balance %.2f over %.0f processes\n",
+                    totals.rounds, targets, busiest, targets / (busiest * processes), processes);
+      host.log(line);
     }
     host.restore_ghost_cutoff();
   }
