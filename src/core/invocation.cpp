@@ -105,6 +105,9 @@ std::string format(const char *fmt, double a, double b = 0)
 // applies them to its view, so that the next round needs no migration and
 // no new ghosts from the host.
 constexpr int kRecord = 6;
+// size keep: targets split into this many classes of radius (equal widths
+// of the targets' range), largest first.
+constexpr int kSizeClasses = 4;
 std::vector<double> share_results(HostHooks &host, const Relocation &rel, bool keep_unplaced)
 {
   std::vector<double> mine;
@@ -291,15 +294,34 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
     a = host.atoms();
     std::vector<int> local;
     std::vector<Particle> view = make_view(a, margin, local);
-    // Targets, and how many fall in each colour of the schedule.
-    std::vector<double> per_colour(lattice.rounds(), 0.0);
+    // Targets, and how many fall in each round of the schedule. With size
+    // keep the targets are split into size classes, largest first, each
+    // class a pass over the colours: the voids that hold a sphere as it is
+    // go to the largest targets of the whole scene first, not only of
+    // their block (docs/design.md, "Rounds").
+    std::vector<std::size_t> found;
+    double target_rmin = INFINITY, target_rmax = 0;
     for (std::size_t k : find_targets(view, settings.tol)) {
       if (!is_matrix(a, local[k])) continue;
       host.set_pending(local[k], true);
-      per_colour[lattice.colour_of(view[k].x)] += 1;
+      found.push_back(k);
+      target_rmin = std::min(target_rmin, view[k].r);
+      target_rmax = std::max(target_rmax, view[k].r);
     }
+    target_rmin = -host.max(-target_rmin);
+    target_rmax = host.max(target_rmax);
+    const int classes = settings.size == SizeMode::Keep ? kSizeClasses : 1;
+    const double class_width = (target_rmax - target_rmin) / classes;
+    auto size_class = [&](double r) {
+      if (!(class_width > 0)) return 0;
+      const double c = std::floor((target_rmax - r) / class_width);
+      return c < 0 ? 0 : (c >= classes ? classes - 1 : static_cast<int>(c));
+    };
+    std::vector<double> per_round(static_cast<std::size_t>(classes) * lattice.rounds(), 0.0);
+    for (std::size_t k : found)
+      per_round[size_class(view[k].r) * lattice.rounds() + lattice.colour_of(view[k].x)] += 1;
     double any = 0;
-    for (double &n : per_colour) any += n = host.sum(n);
+    for (double &n : per_round) any += n = host.sum(n);
     if (any > 0) {
       host.forward_pending();
       a = host.atoms();
@@ -320,12 +342,14 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
       if (view[k].owned) owned[view[k].id] = local[k];
     std::vector<int> doomed;
     double busiest = 0, processes = 1;
-    for (int colour = 0; colour < lattice.rounds(); ++colour) {
-      if (per_colour[colour] == 0) continue;
+    for (std::size_t round = 0; round < per_round.size(); ++round) {
+      if (per_round[round] == 0) continue;
+      const int cls = static_cast<int>(round) / lattice.rounds();
+      const int colour = static_cast<int>(round) % lattice.rounds();
       totals.rounds++;
       // Each target is relocated by the process that owns its block's centre.
       auto mine = [&](const Particle &p) {
-        return in_box(p.x, domain) && lattice.colour_of(p.x) == colour &&
+        return in_box(p.x, domain) && lattice.colour_of(p.x) == colour && size_class(p.r) == cls &&
                in_subdomain(lattice.centre_of(p.x), domain);
       };
       const Relocation rel =
