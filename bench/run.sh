@@ -8,20 +8,27 @@
 #                                table; the page goes to a scratch folder
 #                                (run by the test suite so the harness cannot rot)
 #   REINFORCE_BENCH_SKIP="slab scaling"  leaves parts out (the page says so)
+#   REINFORCE_BENCH_OUT=DIR, REINFORCE_BENCH_DOCS=DIR  other folders for the raw
+#                                results (bench/out) and the page (docs)
 #
 # Methods, each timed around its own operation only (not LAMMPS start-up):
-#   fix       reinforce/invert: defaults (size fit, choose closest, tries
-#             1000), choose first, tries 15 (paper-era budget), size keep;
-#             time = the fix's own f_ID[9]
+#   fix       reinforce/invert: defaults (size keep, choose closest, tries
+#             1000, no pushing), size fit (the seed paper's mode), choose
+#             first, tries 15 (paper-era budget), push rmax (size keep with
+#             pushing); time = the fix's own f_ID[9]
 #   delete    delete_atoms overlap with cutoff r_bar + rmax (removes every
 #             target and more) and r_bar + rmin (misses some); time = wall
 #             clock around the command (shell date in the input)
 #   relax     dynamic relaxation, bars frozen: largest overlap and atoms
 #             lost against elapsed time, a dump every chunk of steps
+#   grow      the reference a user would otherwise make: the same packing law
+#             grown around the bars from the start (build/tests/grow_packing
+#             --around-bars), its wall time and its own scene quality
 # plus the whole process time and peak memory (/usr/bin/time), scene
-# quality (build/tests/scene_quality, before and after dumps), the fix's time
-# on 1 and 2 processes interleaved (speedup), and against rebar radius and
-# search gap.
+# quality (build/tests/scene_quality, before and after dumps, against the
+# grown reference where there is one), a narrow-size scene (radii 4-5 mm),
+# the LIGGGHTS example (liggghts_reinforce), the fix's time on 1 and 2
+# processes interleaved (speedup), and against rebar radius and search gap.
 set -euo pipefail
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 quick=0 repeats=5
@@ -44,9 +51,11 @@ lmp="$REINFORCE_BUILD/src/lammps/lmp_reinforce"
 check="$REINFORCE_BUILD/tests/check_scene"
 quality="$REINFORCE_BUILD/tests/scene_quality"
 make_scene="$REINFORCE_BUILD/tests/make_scene"
+grow="$REINFORCE_BUILD/tests/grow_packing"
+liggghts="$REINFORCE_BUILD/src/liggghts/liggghts_reinforce"
 inputs="$top/bench/lammps"
 out=${REINFORCE_BENCH_OUT:-$top/bench/out}
-docs="$top/docs"
+docs=${REINFORCE_BENCH_DOCS:-$top/docs}    # the page and its plots (a trial run can write elsewhere)
 if [ "$quick" = 1 ] && [ -z "${REINFORCE_BENCH_OUT:-}" ]; then
   out=$(mktemp -d "${TMPDIR:-/tmp}/bench_quick.XXXXXX")
 fi
@@ -56,9 +65,11 @@ results="$out/results.tsv"
 curves="$out/relax.tsv"
 qual="$out/quality.tsv"
 meta="$out/meta.tsv"
+refs="$out/reference.tsv"
 echo -e "scene\tatoms\tmethod\tparam\tnp\trep\ttargets\trelocated\tdeleted\tvolume_before\tvolume_after\toverlap\tsolves\top_seconds\twall_seconds\tpeak_kb\tremoved\trounds\trebar" > "$results"
 echo -e "scene\tchunk\tseconds\tatoms\tmatrix_rebar\tmatrix_matrix" > "$curves"
-echo -e "scene\tmethod\tparam\tshell_ratio\tshell_ratio_se\tremoved_ratio\tks\ttargets\tdeleted\tmoved_nontargets" > "$qual"
+echo -e "scene\tmethod\tparam\tshell_ratio\tshell_ratio_se\tremoved_ratio\tks\ttargets\tdeleted\tmoved_nontargets\tbulk\tref_bulk\tref_shell_ratio\tshell_vs_reference" > "$qual"
+echo -e "scene\tkind\tseed\tmatrix\trebar\tbox\tphi\tradii\twall_seconds\tcpu_seconds\tgrown\tbulk\tshell_ratio\tshell_ratio_se" > "$refs"
 echo -e "key\tvalue" > "$meta"
 meta() { echo -e "$1\t$2" >> "$meta"; }
 meta quick "$quick"
@@ -85,6 +96,9 @@ timed() {    # timed LOGFILE NP ARGS... : runs lmp_reinforce, prints "wall peak_
 }
 result_value() {    # result_value LOG KEY : a value from the RESULT line
   grep '^RESULT' "$1" | tail -1 | tr ' ' '\n' | awk -v k="$2" 'prev == k {print; exit} {prev = $0}'
+}
+box_of() {    # box_of DATAFILE: "LX x LY x LZ"
+  awk '/xlo xhi/ {x = $2 - $1} /ylo yhi/ {y = $2 - $1} /zlo zhi/ {z = $2 - $1; print x " x " y " x " z; exit}' "$1"
 }
 atoms_of() { awk '/ atoms$/ {print $1; exit}' "$1"; }
 rebar_of() {    # rebar spheres of a scene data file (type 2)
@@ -123,17 +137,58 @@ run_delete() {
   echo -e "$name\t$(atoms_of "$scene")\tdelete_atoms overlap\t$cut\t$np\t$rep\t\t\t$(result_value "$run/log" deleted)\t\t\t$overlap\t\t$seconds\t$wall\t$peak\t\t\t" >> "$results"
   last_run=$run
 }
-# quality NAME SCENE METHOD PARAM RMIN RMAX: scene_quality of the last run's after.dump.
+# quality_of NAME SCENE METHOD PARAM RMIN RMAX [AFTER]: scene_quality of the
+# last run's after.dump (or AFTER; no before then when SCENE is "-"),
+# against the grown reference ${refs_of[NAME]} when there is one.
+declare -A refs_of=()
 quality_of() {
-  local name=$1 scene=$2 method=$3 param=$4 rmin=$5 rmax=$6 line
-  line=$("$quality" --before "$(before_dump "$scene")" --after "$last_run/after.dump" --rmin "$rmin" \
-    --rmax "$rmax" --quiet-profile ${QUALITY_ARGS:-} | grep '^QUALITY') || { echo "bench: scene_quality failed" >&2; exit 1; }
+  local name=$1 scene=$2 method=$3 param=$4 rmin=$5 rmax=$6 after=${7:-$last_run/after.dump} line
+  local args=(--after "$after" --rmin "$rmin" --rmax "$rmax" --quiet-profile)
+  [ "$scene" != - ] && args+=(--before "$(before_dump "$scene")")
+  [ -n "${refs_of[$name]:-}" ] && args+=(--reference "${refs_of[$name]}")
+  line=$("$quality" "${args[@]}" ${QUALITY_ARGS:-} | grep '^QUALITY') || { echo "bench: scene_quality failed" >&2; exit 1; }
   local q=()
-  for k in shell_ratio shell_ratio_se removed_ratio ks targets deleted moved_nontargets; do
+  for k in shell_ratio shell_ratio_se removed_ratio ks targets deleted moved_nontargets bulk ref_bulk \
+           ref_shell_ratio shell_vs_reference; do
     q+=("$(tr ' ' '\n' <<<"$line" | awk -F= -v k="$k" '$1 == k {print $2}')")
   done
   local IFS=$'\t'
   echo -e "$name\t$method\t$param\t${q[*]}" >> "$qual"
+}
+# grow_scene NAME KIND OUT SEED RMIN RMAX PHI GROW_ARGS...: a packing by
+# grow_packing (KIND "alone": the matrix, then the bars added, the fix's
+# input; "around": grown around the bars, the reference), cached in
+# scenes/ with its growth time (OUT.grow: wall and CPU seconds, date, then
+# the arguments: other arguments grow it again), one row of reference.tsv,
+# and for "around" its own scene quality.
+grow_scene() {
+  local name=$1 kind=$2 file=$3 seed=$4 rmin=$5 rmax=$6 phi=$7 line
+  shift 7
+  local extra=()
+  [ "$kind" = around ] && extra=(--around-bars)
+  local args=(--radius "$rmin" "$rmax" --phi "$phi" --seed "$seed" "$@" "${extra[@]}")
+  if [ ! -f "$file" ] || [ ! -f "$file.grow" ] || [ "$(sed -n 2p "$file.grow")" != "${args[*]}" ]; then
+    rm -f "$file" "${file%.data}.before.dump"
+    /usr/bin/time -f "%e %U" -o "$file.time" "$grow" "$file" "${args[@]}" --max-seconds 600 > "$file.log" ||
+      { echo "bench: grow_packing failed, see $file.log" >&2; cat "$file.log" >&2; exit 1; }
+    printf '%s %s\n%s\n' "$(cat "$file.time")" "$(date -u '+%Y-%m-%d_%H:%M_UTC')" "${args[*]}" > "$file.grow"
+    rm -f "$file.time"
+  fi
+  local wall cpu when matrix rebar box q=("" "" "")
+  read -r wall cpu when < <(head -1 "$file.grow")
+  matrix=$(awk '/^Atoms/ {on = 1; next} on && NF >= 7 && $2 == 1 {n++} END {print n + 0}' "$file")
+  rebar=$(rebar_of "$file")
+  box=$(box_of "$file")
+  if [ "$kind" = around ]; then
+    line=$("$quality" --after "$file" --rmin "$rmin" --rmax "$rmax" --quiet-profile | grep '^QUALITY') ||
+      { echo "bench: scene_quality failed on $file" >&2; exit 1; }
+    q=()
+    for k in bulk shell_ratio shell_ratio_se; do
+      q+=("$(tr ' ' '\n' <<<"$line" | awk -F= -v k="$k" '$1 == k {print $2}')")
+    done
+    refs_of[$name]=$file
+  fi
+  echo -e "$name\t$kind\t$seed\t$matrix\t$rebar\t$box\t$phi\t$rmin-$rmax\t$wall\t$cpu\t$when\t${q[0]}\t${q[1]}\t${q[2]}" >> "$refs"
 }
 
 # bench_scene NAME DATAFILE RMIN RMAX RBAR REPEATS: every method, 1 process,
@@ -141,9 +196,13 @@ quality_of() {
 bench_scene() {
   local name=$1 data=$2 rmin=$3 rmax=$4 rbar=$5 reps=$6 rep cut
   echo "== $name ($(atoms_of "$data") atoms)"
+  meta "box_$name" "$(box_of "$data")"
   for rep in $(seq "$reps"); do
     run_fix "$name" "$data" "fix defaults" 1000 1 "$rep"
     [ "$rep" = 1 ] && quality_of "$name" "$data" "fix defaults" 1000 "$rmin" "$rmax"
+    rm -f "$last_run/after.dump"
+    run_fix "$name" "$data" "$size_fit" 1000 1 "$rep" -var opts "size fit"
+    [ "$rep" = 1 ] && quality_of "$name" "$data" "$size_fit" 1000 "$rmin" "$rmax"
     rm -f "$last_run/after.dump"
     run_fix "$name" "$data" "fix choose first" 1000 1 "$rep" -var choose first
     [ "$rep" = 1 ] && quality_of "$name" "$data" "fix choose first" 1000 "$rmin" "$rmax"
@@ -151,8 +210,8 @@ bench_scene() {
     run_fix "$name" "$data" "fix tries 15" 15 1 "$rep" -var tries 15
     [ "$rep" = 1 ] && quality_of "$name" "$data" "fix tries 15" 15 "$rmin" "$rmax"
     rm -f "$last_run/after.dump"
-    run_fix "$name" "$data" "fix size keep" 1000 1 "$rep" -var opts "size keep"
-    [ "$rep" = 1 ] && quality_of "$name" "$data" "fix size keep" 1000 "$rmin" "$rmax"
+    run_fix "$name" "$data" "fix push rmax" 1000 1 "$rep" -var opts "push $rmax"
+    [ "$rep" = 1 ] && quality_of "$name" "$data" "fix push rmax" 1000 "$rmin" "$rmax"
     rm -f "$last_run/after.dump"
     for cut in "$(awk -v a="$rbar" -v b="$rmax" 'BEGIN {print a + b}')" \
                "$(awk -v a="$rbar" -v b="$rmin" 'BEGIN {print a + b}')"; do
@@ -161,6 +220,40 @@ bench_scene() {
       rm -f "$last_run/after.dump"
     done
   done
+}
+# run_liggghts METHOD REP [KEYWORDS]: the LIGGGHTS example
+# (examples/liggghts/in.liggghts: insert/pack, settling, two bars, the fix),
+# one row from the fix's log line, scene quality of the data file it writes
+# (no before: it writes none).
+run_liggghts() {
+  local method=$1 rep=$2 extra=${3:-}
+  local run="$out/runs/liggghts_$(echo "$method" | tr -c 'A-Za-z0-9.\n-' '_')_$rep" wall peak line
+  mkdir -p "$run"
+  # LIGGGHTS 3.8 crashes in insert/pack under -screen none: the screen goes to a file.
+  (cd "$top/examples/liggghts" && /usr/bin/time -f "%e %M" -o "$run/log.time" "$liggghts" -in in.liggghts \
+    -var out "$run" -var tag bench -var extra "$extra" -log "$run/log" > "$run/screen") ||
+    { echo "bench: liggghts run failed, see $run/log" >&2; tail -3 "$run/log" >&2; exit 1; }
+  read -r wall peak < "$run/log.time"
+  line=$(grep '^fix reinforce/invert: [0-9]' "$run/log" | tail -1)
+  # "T targets, R relocated, D deleted (...), K kept, volume A -> B, max overlap O rmin,
+  #  S solves, ..., N rounds, X s (rmin ...)"
+  awk -v scene=liggghts -v method="$method" -v rep="$rep" -v wall="$wall" -v peak="$peak" \
+      -v after="$(awk '/ atoms$/ {print $1; exit}' "$run/liggghts_bench.data")" '{
+    sub(/^fix reinforce\/invert: /, "")
+    for (i = 1; i <= NF; i++) {
+      if ($(i + 1) ~ /^targets/) t = $i
+      if ($(i + 1) ~ /^relocated/) r = $i
+      if ($(i + 1) == "deleted") d = $i
+      if ($i == "volume") { vb = $(i + 1); va = $(i + 3); sub(/,$/, "", va) }
+      if ($i == "overlap") o = $(i + 1)
+      if ($(i + 1) ~ /^solves/) s = $i
+      if ($(i + 1) ~ /^rounds/) n = $i
+      if ($(i + 1) == "s") x = $i
+    }
+    printf "%s\t%s\t%s\t1000\t1\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t\t%s\t\n", scene, after + d, method, rep,
+      t, r, d, vb, va, o, s, x, wall, peak, n
+  }' <<<"$line" >> "$results"
+  last_run=$run
 }
 # relax NAME DATAFILE RMIN CHUNKS STEPS: dynamic relaxation, once, serially.
 relax() {
@@ -230,13 +323,46 @@ finish() {
   echo "wrote $docs/benchmarks.md"
 }
 
+# The seed paper's placement mode, named so in every table.
+size_fit="fix size fit (seed paper)"
+# liggghts_part REPEATS: the LIGGGHTS example with the fix's defaults and size fit.
+liggghts_part() {
+  if [ ! -x "$liggghts" ]; then
+    meta "skipped" "liggghts"; echo "== liggghts: no $liggghts, skipped"; return 0
+  fi
+  local rep
+  for rep in $(seq "$1"); do
+    run_liggghts "fix defaults" "$rep"
+    [ "$rep" = 1 ] && quality_of liggghts - "fix defaults" 1000 0.003 0.005 "$last_run/liggghts_bench.data"
+    [ "$quick" = 1 ] && return 0
+    run_liggghts "$size_fit" "$rep" "size fit"
+    [ "$rep" = 1 ] && quality_of liggghts - "$size_fit" 1000 0.003 0.005 "$last_run/liggghts_bench.data"
+  done
+  return 0
+}
+
 beam="$top/examples/beam/data"
+# The beam's five bars (examples/beam/make_bars.sh) in grow_packing's terms:
+# 65 spheres of radius 5 mm from x = 5 mm to 495 mm.
+beam_bars=(--box 0 0.5 0 0.25 0 0.25)
+for yz in "0.04 0.04" "0.125 0.04" "0.21 0.04" "0.04 0.21" "0.21 0.21"; do
+  read -r y z <<<"$yz"
+  beam_bars+=(--bar 0.005 "$y" "$z" 0.495 "$y" "$z" 0.005 0.00766)
+done
 if [ "$quick" = 1 ]; then
   small="$out/scenes/small.data"
   "$make_scene" "$small" --fcc --box 0 0.2 0 0.1 0 0.1 --radius 0.005 0.0075 \
     --bar 0.01 0.05 0.05 0.19 0.05 0.05 0.005 0.0077
-  meta scenes "small"
+  meta scenes "small narrow liggghts"
+  # The narrow scene in small: one bar in a box of about 1,400 spheres.
+  narrow_box=(--box 0 0.12 0 0.1 0 0.1 --bar 0.005 0.05 0.05 0.115 0.05 0.05 0.005 0.0075)
+  part reference && grow_scene narrow around "$out/scenes/narrow_small_ref.data" 12 0.004 0.005 0.58 "${narrow_box[@]}"
   part compare && bench_scene small "$small" 0.005 0.0075 0.005 1
+  if part narrow; then
+    grow_scene narrow alone "$out/scenes/narrow_small.data" 11 0.004 0.005 0.58 "${narrow_box[@]}"
+    bench_scene narrow "$out/scenes/narrow_small.data" 0.004 0.005 0.005 1
+  fi
+  part liggghts && liggghts_part 1
   part relax && relax small "$small" 0.005 2 20
   part speedup && speedup small "$small" 1
   part gap && series_gap small "$small" 0.0075 1
@@ -244,26 +370,45 @@ if [ "$quick" = 1 ]; then
   finish
   rows=$(($(wc -l < "$results") - 1))
   echo "bench --quick: $rows result rows, $(($(wc -l < "$qual") - 1)) quality rows, $(($(wc -l < "$curves") - 1)) relaxation points in $out"
-  [ "$rows" -eq $((6 + 1 + 2 + 4 + 4)) ] && [ "$(wc -l < "$qual")" -eq 7 ] && [ "$(wc -l < "$curves")" -eq 4 ] ||
+  lig=0
+  [ -x "$liggghts" ] && lig=1
+  [ "$rows" -eq $((7 + 1 + 2 + 4 + 4 + 7 + lig)) ] && [ "$(wc -l < "$qual")" -eq $((15 + lig)) ] &&
+    [ "$(wc -l < "$curves")" -eq 4 ] && [ "$(wc -l < "$refs")" -eq 3 ] ||
     { echo "bench --quick: missing rows"; exit 1; }
+  awk -F'\t' 'NR > 1 && $1 == "narrow" && $13 == "" {bad = 1} END {exit bad}' "$qual" \
+    || { echo "bench --quick: no reference figures in the narrow scene's quality"; exit 1; }
   awk -F'\t' 'NR > 1 && $3 ~ /^fix/ && ($7 == "" || $14 == "" || $18 == "") {bad = 1} END {exit bad}' "$results" \
     || { echo "bench --quick: fix row incomplete"; exit 1; }
   grep -q "^## Parallel speedup" "$docs/benchmarks.md" && grep -q "^## Scene quality" "$docs/benchmarks.md" &&
-    grep -q "^## Cost against rebar radius and search gap" "$docs/benchmarks.md" ||
+    grep -q "^## Cost against rebar radius and search gap" "$docs/benchmarks.md" &&
+    grep -q "^## Against a packing grown around the bars" "$docs/benchmarks.md" ||
     { echo "bench --quick: report section missing"; exit 1; }
   [ -z "${REINFORCE_BENCH_OUT:-}" ] && rm -rf "$out"
   exit 0
 fi
 
-meta scenes "beam050 beam060 beam064 slab"
+meta scenes "beam050 beam060 beam064 narrow slab liggghts"
 for phi in 050 060 064; do
   scene="$out/scenes/beam$phi.data"
   [ -f "$scene" ] || mpirun -np 1 "$lmp" -in "$inputs/in.prepare" -var matrix "$beam/matrix_phi$phi.data.gz" \
     -var bars "$beam/bars.data" -var out "$scene" -log none -screen none
 done
+# The references: the beam's law at 0.60 (and the narrow scene's) grown
+# around the beam's bars; compare and narrow measure against them.
+if part reference; then
+  grow_scene beam060 around "$out/scenes/beam060_ref.data" 12 0.0025 0.0075 0.60 "${beam_bars[@]}"
+  grow_scene narrow around "$out/scenes/narrow_ref.data" 12 0.004 0.005 0.60 "${beam_bars[@]}"
+fi
 part compare && for phi in 050 060 064; do
   bench_scene "beam$phi" "$out/scenes/beam$phi.data" 0.0025 0.0075 0.005 3
 done
+# The narrow scene: radii 4-5 mm (ratio 1.25) at 0.60 in the beam's box,
+# grown alone (grow_packing, seed 11), then the beam's bars added.
+if part narrow; then
+  grow_scene narrow alone "$out/scenes/narrow.data" 11 0.004 0.005 0.60 "${beam_bars[@]}"
+  bench_scene narrow "$out/scenes/narrow.data" 0.004 0.005 0.005 2
+fi
+part liggghts && liggghts_part 2
 part speedup && speedup beam060 "$out/scenes/beam060.data" 5
 part gap && series_gap beam060 "$out/scenes/beam060.data" 0.0075 3
 part rbar && series_rbar "$beam/matrix_phi060.data.gz" 0.5 0 3
@@ -282,7 +427,7 @@ fi
 if part slab; then
   speedup slab "$slab" 5
   for rep in 1 2 3; do
-    run_fix slab "$slab" "fix size keep" 1000 1 "$rep" -var opts "size keep"
+    run_fix slab "$slab" "$size_fit" 1000 1 "$rep" -var opts "size fit"
     rm -f "$last_run/after.dump"
     run_delete slab "$slab" 0.0125 1 "$rep" 0.0025; rm -f "$last_run/after.dump"
     run_delete slab "$slab" 0.0075 1 "$rep" 0.0025; rm -f "$last_run/after.dump"
