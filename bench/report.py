@@ -339,12 +339,13 @@ if sp_scenes:
     md.append(
         "The fix with its defaults on 1 and 2 processes, the two alternating in every repeat (one harness "
         "run); time = `f_ID[9]` (the largest over processes). **rounds** = `f_ID[17]`, the rounds of the "
-        "schedule by space that had work (one per colour of blocks with targets; the atoms are refreshed "
-        "between rounds). The fix reports totals only (targets, solves, time): the work of each process in "
-        "each round is not in its output, so it is not shown here.\n")
+        "schedule by space that had work (one per colour of blocks with targets, and with `size keep` per "
+        "class of radius; the atoms are migrated once per invocation, each process updates its own view "
+        "between rounds). **busiest** = the targets of the busiest process summed over the rounds, and "
+        "**balance** = targets / (busiest x processes), both from the fix's schedule log line (1 = even).\n")
     md.append("| scene | spheres | targets | rounds | runs | 1 process s | 2 processes s | speedup (1 / 2) | "
-              "deleted 1, 2 |")
-    md.append("|---|---|---|---|---|---|---|---|---|")
+              "busiest (2 processes) | balance | deleted 1, 2 |")
+    md.append("|---|---|---|---|---|---|---|---|---|---|---|")
     for s in sp_scenes:
         g = group(s)
         one, two = find([m for m in g if m["np"] == "1"], "fix defaults"), \
@@ -354,6 +355,7 @@ if sp_scenes:
         md.append(
             f"| {s[8:]} | {one['atoms']:,.0f} | {one['targets']:.0f} | {one['rounds']:.0f} | {one['repeats']} | "
             f"{one['op_seconds']:.3f} | {two['op_seconds']:.3f} | {one['op_seconds'] / two['op_seconds']:.2f} | "
+            f"{fmt(two.get('busiest'), '.0f')} | {fmt(two.get('balance'), '.2f')} | "
             f"{one['deleted']:.0f}, {two['deleted']:.0f} |")
         model_rows.append((s[8:], one, two))
     if model_rows:

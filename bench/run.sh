@@ -66,7 +66,7 @@ curves="$out/relax.tsv"
 qual="$out/quality.tsv"
 meta="$out/meta.tsv"
 refs="$out/reference.tsv"
-echo -e "scene\tatoms\tmethod\tparam\tnp\trep\ttargets\trelocated\tdeleted\tvolume_before\tvolume_after\toverlap\tsolves\top_seconds\twall_seconds\tpeak_kb\tremoved\trounds\trebar" > "$results"
+echo -e "scene\tatoms\tmethod\tparam\tnp\trep\ttargets\trelocated\tdeleted\tvolume_before\tvolume_after\toverlap\tsolves\top_seconds\twall_seconds\tpeak_kb\tremoved\trounds\trebar\tbalance\tbusiest" > "$results"
 echo -e "scene\tchunk\tseconds\tatoms\tmatrix_rebar\tmatrix_matrix" > "$curves"
 echo -e "scene\tmethod\tparam\tshell_ratio\tshell_ratio_se\tremoved_ratio\tks\ttargets\tdeleted\tmoved_nontargets\tbulk\tref_bulk\tref_shell_ratio\tshell_vs_reference" > "$qual"
 echo -e "scene\tkind\tseed\tmatrix\trebar\tbox\tphi\tradii\twall_seconds\tcpu_seconds\tgrown\tbulk\tshell_ratio\tshell_ratio_se" > "$refs"
@@ -122,7 +122,12 @@ run_fix() {
   local v=()
   for k in targets relocated deleted volume_before volume_after overlap solves seconds; do v+=("$(result_value "$run/log" $k)"); done
   local IFS=$'\t'
-  echo -e "$name\t$(atoms_of "$scene")\t$method\t$param\t$np\t$rep\t${v[*]}\t$wall\t$peak\t$(result_value "$run/log" removed)\t$(result_value "$run/log" rounds)\t${REBAR:-}" >> "$results"
+  # The schedule line: the busiest process's targets over the rounds and
+  # the balance between processes (1 = even).
+  local sched
+  sched=$(sed -n 's/^fix reinforce\/invert: schedule: .* busiest process \([0-9]*\) targets over the rounds, balance \([0-9.]*\) over .*/\2\t\1/p' "$run/log" | tail -1)
+  [ -n "$sched" ] || sched=$'\t'
+  echo -e "$name\t$(atoms_of "$scene")\t$method\t$param\t$np\t$rep\t${v[*]}\t$wall\t$peak\t$(result_value "$run/log" removed)\t$(result_value "$run/log" rounds)\t${REBAR:-}\t$sched" >> "$results"
   last_run=$run
 }
 # run_delete NAME SCENE CUTOFF NP REP RMIN
