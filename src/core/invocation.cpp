@@ -152,8 +152,15 @@ void apply_to_view(const std::vector<double> &all, const Domain &domain,
                    std::vector<Particle> &view)
 {
   if (all.empty()) return;
+  // The copies of the atoms the round changed (one pass over the view; the
+  // map holds only those atoms).
   std::unordered_map<std::int64_t, std::vector<std::size_t>> copies;
-  for (std::size_t k = 0; k < view.size(); ++k) copies[view[k].id].push_back(k);
+  for (std::size_t k = 0; k + kRecord <= all.size(); k += kRecord)
+    copies[static_cast<std::int64_t>(all[k])];
+  for (std::size_t k = 0; k < view.size(); ++k) {
+    auto it = copies.find(view[k].id);
+    if (it != copies.end()) it->second.push_back(k);
+  }
   std::vector<bool> gone(view.size(), false);
   std::vector<Particle> added;
   for (std::size_t k = 0; k + kRecord <= all.size(); k += kRecord) {
@@ -192,12 +199,11 @@ void apply_to_view(const std::vector<double> &all, const Domain &domain,
       added.push_back(p);
     }
   }
-  std::vector<Particle> next;
-  next.reserve(view.size() + added.size());
+  std::size_t kept = 0;
   for (std::size_t k = 0; k < view.size(); ++k)
-    if (!gone[k]) next.push_back(view[k]);
-  next.insert(next.end(), added.begin(), added.end());
-  view.swap(next);
+    if (!gone[k]) view[kept++] = view[k];
+  view.resize(kept);
+  view.insert(view.end(), added.begin(), added.end());
 }
 
 }    // namespace
