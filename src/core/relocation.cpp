@@ -394,10 +394,21 @@ private:
       for (int k = 0; k < nfound; ++k) {
         const Sphere &sol = found[k];
         if (!(sol.r > 0) || sol.r > rho_max || norm(sol.c - x0) > max_shift) continue;
+        if (overlaps_one_of(near, sol.c, sol.r)) continue;    // take() would reject it too
         if (take(sol)) return true;
       }
       return false;
     });
+  }
+
+  // True when sphere (c, r) overlaps one of the candidates by more than
+  // tol (the test of Scene::fits): most solutions fail on the nearest
+  // spheres, and this list is shorter than a grid query.
+  bool overlaps_one_of(const std::vector<Candidate> &near, Vec3 c, double r) const
+  {
+    for (const Candidate &q : near)
+      if (spheres_overlap(c, r, scene_.x(q.index), scene_.r(q.index), s_.tol)) return true;
+    return false;
   }
 
   // A place for a sphere of the target's own radius r0: tangent to three
@@ -423,7 +434,8 @@ private:
       stats_.solves++;
       for (int k = 0; k < nfound; ++k) {
         const double shift = norm(found[k] - x0);
-        if (shift > max_shift || shift >= best.score || !admissible(found[k], r0, domain_))
+        if (shift > max_shift || shift >= best.score || !admissible(found[k], r0, domain_) ||
+            overlaps_one_of(near, found[k], r0))
           continue;
         double deepest;
         if (scene_.fits(found[k], r0, s_.tol, deepest)) best = {found[k], r0, shift};
