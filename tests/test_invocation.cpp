@@ -322,3 +322,143 @@ TEST(Invocation, ZeroRadiusRebarIsAnError)
     EXPECT_NE(std::string(e.what()).find("has radius 0"), std::string::npos);
   }
 }
+
+namespace {
+
+// MemoryHost with a neighbour list of its own, as source-built LAMMPS has:
+// build_neighbour_lists says yes when the list reaches the cutoff asked
+// (`reach`), and neighbours() answers by brute force, in index order. It
+// records the queries and the atoms marked as targets.
+class ListHost : public MemoryHost {
+public:
+  double reach = INFINITY;
+  double asked = 0;
+  int builds = 0, queries = 0;
+  std::vector<std::int64_t> marked;    // IDs of the atoms set pending, in order
+
+  bool build_neighbour_lists(double cutoff) override
+  {
+    ++builds;
+    asked = cutoff;
+    return cutoff <= reach;
+  }
+  void neighbours(int local, std::vector<int> &out) override
+  {
+    ++queries;
+    out.clear();
+    for (int j = 0; j < static_cast<int>(pos.size()); ++j) {
+      const double d = std::sqrt(std::pow(pos[local][0] - pos[j][0], 2) +
+                                 std::pow(pos[local][1] - pos[j][1], 2) +
+                                 std::pow(pos[local][2] - pos[j][2], 2));
+      if (j != local && d <= asked) out.push_back(j);
+    }
+  }
+  void set_pending(int i, bool p) override
+  {
+    if (p) marked.push_back(tag[i]);
+    MemoryHost::set_pending(i, p);
+  }
+};
+
+// A scene with atoms outside the fix group on the bar too (obstacles, never
+// targets), and two spheres of the largest matrix radius (0.04) at the edge
+// of matrix-rebar contact (0.04 + 0.03) with a bead: one overlaps it by
+// 1e-5 (a target), one by 1e-9, less than tol * 0.03 (not a target).
+void fill_with_others(MemoryHost &h, unsigned seed)
+{
+  fill(h, seed);
+  h.add({0.25, 0.5, 0.53}, 0.02, kOther);
+  h.add({0.75, 0.47, 0.5}, 0.025, kOther);
+  std::vector<std::array<double, 3>> beads;
+  for (std::size_t i = 0; i < h.pos.size(); ++i)
+    if (h.mask[i] & kRebar) beads.push_back(h.pos[i]);
+  const std::array<double, 3> b1 = beads.at(6), b2 = beads.at(12);
+  h.add({b1[0], b1[1], b1[2] + (0.07 - 1e-5)}, 0.04, kGroup);
+  h.add({b2[0], b2[1] - (0.07 - 1e-9), b2[2]}, 0.04, kGroup);
+}
+
+// Matrix-rebar contact: the largest matrix radius (the fix group without the
+// rebar; atoms outside the group are never targets) plus the largest rebar
+// radius.
+double contact_of(const MemoryHost &h)
+{
+  double matrix = 0, rebar = 0;
+  for (std::size_t i = 0; i < h.radius.size(); ++i) {
+    if (h.mask[i] & kRebar)
+      rebar = std::max(rebar, h.radius[i]);
+    else if (h.mask[i] & kGroup)
+      matrix = std::max(matrix, h.radius[i]);
+  }
+  return matrix + rebar;
+}
+
+void expect_same_relocation(const ListHost &a, const Totals &ta, const ListHost &b,
+                            const Totals &tb)
+{
+  EXPECT_EQ(a.marked, b.marked);
+  EXPECT_EQ(ta.stats.targets, tb.stats.targets);
+  EXPECT_EQ(ta.stats.relocated, tb.stats.relocated);
+  EXPECT_EQ(ta.stats.unplaced, tb.stats.unplaced);
+  EXPECT_EQ(ta.stats.solves, tb.stats.solves);
+  EXPECT_EQ(ta.stats.volume_before, tb.stats.volume_before);
+  EXPECT_EQ(ta.stats.volume_after, tb.stats.volume_after);
+  EXPECT_EQ(a.tag, b.tag);
+  EXPECT_EQ(a.pos, b.pos);
+  EXPECT_EQ(a.radius, b.radius);
+}
+
+}    // namespace
+
+// Issue 11: the overlap check that finds the targets, answered by the
+// host's list, gives the same targets as the engine's grid, and the same
+// relocation; the list is asked for matrix rmax + rebar rmax.
+TEST(Invocation, HostListFindsTheSameTargetsAsTheGrid)
+{
+  for (unsigned seed : {1u, 9u, 10u}) {
+    for (const char *size : {"keep", "fit"}) {
+      ListHost with_list, grid;
+      fill_with_others(with_list, seed);
+      fill_with_others(grid, seed);
+      grid.reach = 0;    // no list: the engine's grid
+      const double contact = contact_of(with_list);
+      const FixOptions options = parse_fix_arguments({"0", "bars", "size", size});
+      const Totals tl = run_invocation(with_list, options);
+      const Totals tg = run_invocation(grid, options);
+      SCOPED_TRACE(std::string("seed ") + std::to_string(seed) + " size " + size);
+      EXPECT_EQ(with_list.builds, 1);
+      EXPECT_EQ(with_list.asked, contact);
+      EXPECT_GT(with_list.queries, 0);
+      EXPECT_EQ(grid.builds, 1);
+      EXPECT_EQ(grid.queries, 0);
+      EXPECT_GT(tl.stats.targets, 10);
+      expect_same_relocation(with_list, tl, grid, tg);
+    }
+  }
+}
+
+// A list shorter than matrix-rebar contact (radii grew since the host set it
+// up) is not used: the grid answers, with the same result.
+TEST(Invocation, ShortHostListFallsBackToTheGrid)
+{
+  ListHost reference, short_list;
+  fill_with_others(reference, 11);
+  fill_with_others(short_list, 11);
+  reference.reach = 0;
+  const double contact = contact_of(short_list);
+  short_list.reach = std::nextafter(contact, 0.0);
+  const FixOptions options = parse_fix_arguments({"0", "bars"});
+  const Totals ts = run_invocation(short_list, options);
+  const Totals tr = run_invocation(reference, options);
+  EXPECT_EQ(short_list.asked, contact);
+  EXPECT_EQ(short_list.builds, 1);
+  EXPECT_EQ(short_list.queries, 0);
+  EXPECT_GT(ts.stats.targets, 10);
+  expect_same_relocation(short_list, ts, reference, tr);
+  // Exactly long enough: used.
+  ListHost exact;
+  fill_with_others(exact, 11);
+  exact.reach = contact;
+  const Totals te = run_invocation(exact, options);
+  EXPECT_GT(exact.queries, 0);
+  expect_same_relocation(exact, te, reference, tr);
+}

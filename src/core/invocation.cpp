@@ -305,9 +305,45 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
     // class a pass over the colours: the voids that hold a sphere as it is
     // go to the largest targets of the whole scene first, not only of
     // their block (docs/design.md, "Rounds").
+    //
+    // The overlap check: owned matrix spheres of the fix group that overlap
+    // a rebar sphere by more than tol * min radius. Each process marks only
+    // its own (owned) targets, so a list with rows for owned atoms is enough.
+    // The host's list answers when it has one that reaches matrix-rebar
+    // contact (source-built LAMMPS: its occasional full list); else, or when
+    // it is shorter (radii grew since the host set it up), the engine's grid
+    // over the view does (find_targets). Both decide each pair with
+    // spheres_overlap on the same coordinates, and both see every rebar
+    // sphere a target can overlap: a target touches a bar, so it is in the
+    // view, and the rebar spheres it overlaps lie within matrix rmax +
+    // rebar rmax of it (owned or ghost). So both give the same targets, in
+    // view order (tests: Invocation.HostListFindsTheSameTargets*, and
+    // src_lammps_same_as_packaged_host_list against lmp_reinforce).
+    double rebar_rmax = 0;
+    for (const Particle &p : view)
+      if (p.role == Role::Rebar) rebar_rmax = std::max(rebar_rmax, p.r);
+    const double contact = matrix_rmax + host.max(rebar_rmax);
+    std::vector<std::size_t> overlapping;
+    if (host.build_neighbour_lists(contact)) {
+      std::vector<int> near;
+      for (std::size_t k = 0; k < view.size(); ++k) {
+        if (!view[k].owned || !is_matrix(a, local[k])) continue;
+        host.neighbours(local[k], near);
+        for (int j : near) {
+          if (!(a.mask[j] & a.rebar_bit)) continue;
+          if (spheres_overlap(view[k].x, view[k].r, Vec3{a.x[j][0], a.x[j][1], a.x[j][2]},
+                              a.radius[j], settings.tol)) {
+            overlapping.push_back(k);
+            break;
+          }
+        }
+      }
+    } else {
+      overlapping = find_targets(view, settings.tol);
+    }
     std::vector<std::size_t> found;
     double target_rmin = INFINITY, target_rmax = 0;
-    for (std::size_t k : find_targets(view, settings.tol)) {
+    for (std::size_t k : overlapping) {
       if (!is_matrix(a, local[k])) continue;
       host.set_pending(local[k], true);
       found.push_back(k);

@@ -54,11 +54,17 @@ public:
   // Every process's values, concatenated in rank order (collective).
   virtual std::vector<double> gather_all(const std::vector<double> &mine) = 0;
 
-  // Optional: the host's own neighbour lists. build_neighbour_lists returns
-  // false when the host has none (the engine then uses its own grid), true
-  // when it built a full list, ghosts included, covering `cutoff`; then
-  // neighbours(local) gives the local indices (owned or ghost) of every atom
-  // within `cutoff` of owned atom `local`.
+  // Optional: the host's own neighbour list, for the overlap check that
+  // finds the targets (the only query the engine sends to it; the candidate
+  // search stays on the engine's grid: docs/design.md, "Targets").
+  // build_neighbour_lists is called once per invocation, at the same point
+  // on every process (it may be collective), after the ghosts are final;
+  // it returns false when the host has no list that reaches `cutoff` (the
+  // engine then uses its own grid, with the same result), true when it
+  // built a full list over the current atoms with a row for each owned
+  // atom; then neighbours(local), for an owned atom, gives the local
+  // indices (owned or ghost) of every atom within `cutoff` of it, in any
+  // order (rows for ghosts are not needed).
   virtual bool build_neighbour_lists(double cutoff)
   {
     (void)cutoff;

@@ -24,9 +24,11 @@
 #include "update.h"
 #if REINFORCE_LAMMPS_SOURCE_BUILD
 #include "atom_vec.h"
+#include "force.h"
 #include "neigh_list.h"
 #include "neigh_request.h"
 #include "neighbor.h"
+#include "pair.h"
 #endif
 
 #include "fix_options.h"
@@ -192,25 +194,55 @@ public:
   }
 
 #if REINFORCE_LAMMPS_SOURCE_BUILD
-  // [2] The host's occasional full list (requested in init()), over the
-  // current owned and ghost atoms: each owned atom's neighbours, ghosts
-  // included, within the list's cutoff. LAMMPS refuses an occasional list
-  // with ghost info under neighbor style bin, so the list holds owned atoms
-  // only, which is what neighbours() promises. Its cutoff was fixed when
-  // LAMMPS set up the lists (it must then lie within the ghost cutoff): a
-  // larger request is answered "no list", and the engine uses its own grid.
+  // [2] The host's occasional full list (FixReinforceInvert::
+  // request_neighbour_list), for the overlap check that finds the targets.
+  // Rows for owned atoms only (LAMMPS refuses an occasional binned list with
+  // ghost info), their neighbours owned or ghost: what neighbours()
+  // promises, and all that check needs. Its cutoff was fixed at init(): a
+  // larger request (radii grew since), exclusions, or no list at all are
+  // answered "no list", and the engine uses its own grid (same targets).
+  //
+  // Built as delete_atoms builds its list after a fresh exchange: bins for
+  // the current ghost extent (raised or not), neighbor->build(), then
+  // build_one(). build() is needed: refresh() moved atoms after LAMMPS last
+  // binned them, and only build() bins them again (build_one() does not);
+  // and build_one() skips a list built since the last build(), and every
+  // list before the first build() of all (at the first run's setup: both
+  // step stamps are -1; tests/source_hosts, *_host_list_*, fail without
+  // it). The perpetual lists build() makes too are made again by LAMMPS
+  // right after pre_exchange, as after fix gcmc and fix atom/swap, which
+  // also call neighbor->build() there.
   bool build_neighbour_lists(double cutoff) override
   {
-    if (!f.list || !(cutoff <= f.neighbor->cutneighmax) ||
-        !(cutoff <= std::min({f.comm->cutghost[0], f.comm->cutghost[1], f.comm->cutghost[2]})))
-      return false;
-    f.neighbor->setup_bins();    // bins for the current ghost extent
+    Neighbor *neighbor = f.neighbor;
+    const double ghost = std::min({f.comm->cutghost[0], f.comm->cutghost[1], f.comm->cutghost[2]});
+    std::string why;
+    if (!f.list)
+      why = f.list_why.empty() ? "LAMMPS gave the fix no list" : f.list_why;
+    else if (neighbor->exclude || neighbor->includegroup)
+      why = "neigh_modify exclude or include is set (the list would leave pairs out)";
+    else if (!(cutoff <= f.list_cutoff))
+      why = "the matrix-rebar contact " + format_length(cutoff) + " exceeds the list's cutoff " +
+            format_length(f.list_cutoff) + " (radii grew since the run began)";
+    else if (!(f.list_cutoff <= ghost))
+      why = "the ghost cutoff " + format_length(ghost) + " is shorter than the list's cutoff";
+    const int used = why.empty() ? 1 : 0;
+    if (used != f.list_used)
+      log(used ? "fix reinforce/invert: targets found with LAMMPS's occasional full neighbor "
+                 "list (cutoff " +
+                     format_length(f.list_cutoff) + ")\n"
+               : "fix reinforce/invert: targets found with the engine's grid: " + why + "\n");
+    f.list_used = used;
+    if (!used) return false;
+
+    neighbor->setup_bins();    // bins for the current ghost extent
     binned = true;
-    f.neighbor->build_one(f.list);
+    neighbor->build(1);
+    neighbor->build_one(f.list);
     row.assign(f.atom->nlocal, -1);
     for (int ii = 0; ii < f.list->inum; ++ii)
       if (f.list->ilist[ii] < f.atom->nlocal) row[f.list->ilist[ii]] = ii;
-    list_cutoff = cutoff;
+    query_cutoff = cutoff;
     return true;
   }
 
@@ -225,7 +257,7 @@ public:
       const int j = jlist[k] & NEIGHMASK;
       const double dx = xi[0] - f.atom->x[j][0], dy = xi[1] - f.atom->x[j][1],
                    dz = xi[2] - f.atom->x[j][2];
-      if (dx * dx + dy * dy + dz * dz <= list_cutoff * list_cutoff) out.push_back(j);
+      if (dx * dx + dy * dy + dz * dz <= query_cutoff * query_cutoff) out.push_back(j);
     }
   }
 #endif
@@ -323,9 +355,9 @@ private:
   FixReinforceInvert &f;
   double saved_cutghostuser = 0;
   bool raised = false;
-  bool binned = false;     // source-built: bins set up for a raised cutoff
-  std::vector<int> row;    // source-built: list row of each owned atom
-  double list_cutoff = 0;
+  bool binned = false;        // source-built: bins set up for a raised cutoff
+  std::vector<int> row;       // source-built: list row of each owned atom
+  double query_cutoff = 0;    // source-built: neighbours() gives atoms this close
 };
 
 /* ---------------------------------------------------------------------- */
@@ -463,12 +495,79 @@ void FixReinforceInvert::init()
   find_groups_and_region();
 #if REINFORCE_LAMMPS_SOURCE_BUILD
   // [2] Occasional: built only inside an invocation (Host::build_neighbour_lists).
-  list = nullptr;
-  neighbor->add_request(this, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL);
+  request_neighbour_list();
 #endif
 }
 
 #if REINFORCE_LAMMPS_SOURCE_BUILD
+// [2] An occasional full list at the reach of matrix-rebar contact: the
+// largest matrix radius (fix group, not rebar) plus the largest rebar
+// radius, over all processes, 1% more (rounding; radii that grow a little
+// during the run), and with the radius keyword room for relocated spheres
+// up to its rmax, as far as the communication cutoff allows. Only the
+// overlap check that finds the targets uses it (docs/design.md, "Targets").
+// No list (the engine's grid instead, same targets) with a neighbor style
+// other than bin (LAMMPS honours a list's own cutoff only there) or when
+// contact reaches past the communication cutoff: LAMMPS stops the run at
+// init for a custom cutoff beyond it ("Custom neighbor list cutoff too large
+// for communication cutoff"), and the ghost cutoff raised during an
+// invocation comes too late for a list set up at init. Collective.
+void FixReinforceInvert::request_neighbour_list()
+{
+  constexpr double kListMargin = 0.01;
+  list_cutoff = 0;
+  list_used = -1;
+  double mine[2] = {0.0, 0.0}, all[2] = {0.0, 0.0};    // matrix, rebar
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (atom->mask[i] & rebar_bit)
+      mine[1] = std::max(mine[1], atom->radius[i]);
+    else if (atom->mask[i] & groupbit)
+      mine[0] = std::max(mine[0], atom->radius[i]);
+  }
+  MPI_Allreduce(mine, all, 2, MPI_DOUBLE, MPI_MAX, world);
+  const double contact = all[0] + all[1];
+  const double matrix_r = options.radius_set ? std::max(all[0], options.rmax) : all[0];
+  const double wanted = (matrix_r + all[1]) * (1 + kListMargin);
+  // Neighbor::init() and Comm::init() run after the fixes' init(): their
+  // cutoffs as they will compute them. cutneighmax: the largest pair cutoff
+  // plus skin (Neighbor::init, the same expression); the communication
+  // cutoff: the larger of it and comm_modify cutoff (Comm::get_comm_cutoff;
+  // no bonds here, the fix refuses molecular styles).
+  double cutneighmax = 0;
+  if (force->pair && force->pair->cutsq)
+    for (int i = 1; i <= atom->ntypes; ++i)
+      for (int j = 1; j <= atom->ntypes; ++j) {
+        const double cut = std::sqrt(force->pair->cutsq[i][j]);
+        if (cut > 0.0) cutneighmax = std::max(cutneighmax, cut + neighbor->skin);
+      }
+  const double comm_cutoff = std::max(comm->cutghostuser, cutneighmax);
+  double cutoff = std::min(wanted, comm_cutoff);
+  // A request at exactly cutneighmax is turned into the default list (with
+  // per-type cutoffs); just below it, it keeps its own.
+  if (cutoff == cutneighmax) cutoff = std::nextafter(cutoff, 0.0);
+  // `list` is set by init_list() when LAMMPS makes the lists anew; when
+  // every request is as in the previous run it keeps them and does not call
+  // init_list(): the pointer from then is still the list. Without a request
+  // it is dropped (LAMMPS deletes the old lists).
+  NeighList *const kept = list;
+  list = nullptr;
+  if (neighbor->style != Neighbor::BIN) {
+    list_why = "LAMMPS's neighbor style is not bin";
+  } else if (!(contact > 0.0)) {
+    list_why = "no matrix or rebar atom at the start of the run";
+  } else if (!(cutoff >= contact)) {
+    list_why = "the matrix-rebar contact " + format_length(contact) +
+               " exceeds LAMMPS's communication cutoff " + format_length(comm_cutoff) +
+               " (pair cutoff + skin, or comm_modify cutoff)";
+  } else {
+    list = kept;
+    list_why.clear();
+    list_cutoff = cutoff;
+    neighbor->add_request(this, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL)
+        ->set_cutoff(list_cutoff);
+  }
+}
+
 void FixReinforceInvert::init_list(int /*id*/, NeighList *ptr)
 {
   list = ptr;

@@ -82,6 +82,15 @@ private:
   bool invoked = false;               // the relocation at the start of the first run is done
   class NeighList *list = nullptr;    // source-built: the host's occasional full list
   std::vector<double> totals;         // f_ID[1..], the latest invocation
+#if REINFORCE_LAMMPS_SOURCE_BUILD
+  // The list's cutoff (0: none requested, and why), and which way the
+  // latest invocation of this run found the targets (-1: none yet, 0: the
+  // engine's grid, 1: the list), so that the log says it once per change.
+  double list_cutoff = 0;
+  std::string list_why;    // <string>: exported by LAMMPS's pointers.h
+  int list_used = -1;
+  void request_neighbour_list();
+#endif
 
   bool done() const;    // N = 0, relocated once
   void check_styles();

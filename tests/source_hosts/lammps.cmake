@@ -99,6 +99,30 @@ if(TARGET lmp_reinforce)
     set_tests_properties(src_lammps_${tname} PROPERTIES TIMEOUT 300 FAIL_REGULAR_EXPRESSION "FAIL"
                          PASS_REGULAR_EXPRESSION "PASS: the same relocation")
   endforeach()
+  # Issue 11: with a pair style whose cutoff reaches matrix-rebar contact
+  # (in.scene_pair: gran/hooke), the plugin finds the targets with LAMMPS's
+  # occasional full neighbor list (its log says so), lmp_reinforce with the
+  # engine's grid: the same targets, statistics and atoms. Serially, and on
+  # 4 processes with periodic seams (ghost rebar spheres in the list); and
+  # once with the in-tree package's lmp.
+  # src_same_host_list(NAME LMP NP "keywords" "-var ..." MAKE_SCENE_ARGS...)
+  function(src_same_host_list name lmp np extra vars)
+    set(test src_lammps_same_as_packaged_host_list_${name}_np${np})
+    add_test(NAME ${test}
+             COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/same_as_packaged.sh ${lmp} $<TARGET_FILE:lmp_reinforce>
+                     ${CMAKE_BINARY_DIR}/tests "${extra}" ${ARGN})
+    set_tests_properties(${test} PROPERTIES TIMEOUT 300 FAIL_REGULAR_EXPRESSION "FAIL"
+                         PASS_REGULAR_EXPRESSION "PASS: the same relocation"
+                         ENVIRONMENT "${MPI_ENV};SAME_INPUT=${CMAKE_CURRENT_SOURCE_DIR}/in.scene_pair;SAME_TARGETS_BY=list;SAME_NP=${np};SAME_VARS=${vars}")
+    if(np GREATER 1)
+      set_tests_properties(${test} PROPERTIES PROCESSORS 2)
+    endif()
+  endfunction()
+  separate_arguments(periodic_list UNIX_COMMAND "${PERIODIC}")
+  src_same_host_list(basic ${PLUGIN_LMP} 1 "" "" ${basic_list})
+  src_same_host_list(basic_fit ${PLUGIN_LMP} 1 "size fit radius 0.007 0.008 choose first tries 200" "" ${basic_list})
+  src_same_host_list(periodic ${PLUGIN_LMP} 4 "tries 15" "-var bx p -var by p" ${periodic_list})
+  src_same_host_list(package_basic ${HOSTS}/as-build-package/src/lammps/lmp_reinforce 1 "" "" ${basic_list})
 endif()
 
 # ---- Bad input: the fix's own ERROR lines, exactly as on the packaged path.
