@@ -102,10 +102,10 @@ struct Totals {
 constexpr int kOutputSize = 17;
 std::array<double, kOutputSize> output_vector(const Totals &t);
 
-// Runs one invocation: radius range, ghost reach, targets, the rounds of
-// the block schedule (a refresh before each round that has work), the
-// results delivered to the atoms' owners, deletions, totals and the log
-// line. Collective: every process calls it.
+// Runs one invocation: radius range, ghost reach, one refresh, targets, the
+// rounds of the block schedule (each round's results delivered to the
+// atoms' owners and applied to every process's view), deletions, totals
+// and the log lines. Collective: every process calls it.
 Totals run_invocation(HostHooks &host, const FixOptions &options);
 
 }    // namespace reinforce
