@@ -499,3 +499,33 @@ TEST(Engine, PackingOverlapsCountedOncePerPair)
   const Particle c{{2, 0, 0}, 1, 40, Role::Matrix, true};
   EXPECT_EQ(count_packing_overlaps({a, c}, 1e-6, 0.5, largest), 0);
 }
+
+// Wrapping and periodic images (what every process applies to its view
+// between rounds, and what a placed sphere adds): a centre past the top
+// edge comes back by one period, one far out by several; a corner of a
+// fully periodic box has 8 copies in a view that covers the box and a
+// margin; non-periodic dimensions give no image; the centre is left out on
+// request.
+TEST(Engine, WrappingAndImagesInView)
+{
+  Domain d;
+  d.lo = {0, 0, 0};
+  d.hi = {1, 2, 4};
+  d.periodic[0] = d.periodic[1] = d.periodic[2] = true;
+  d.view_lo = {-0.1, -0.1, -0.1};
+  d.view_hi = {1.1, 2.1, 4.1};
+  const Vec3 w = wrapped_into_box({1.25, -0.5, 9.0}, d);
+  EXPECT_DOUBLE_EQ(w.x, 0.25);
+  EXPECT_DOUBLE_EQ(w.y, 1.5);
+  EXPECT_DOUBLE_EQ(w.z, 1.0);
+  const Vec3 inside{0.5, 1, 2};
+  EXPECT_EQ(wrapped_into_box(inside, d).x, inside.x);    // unchanged, bit for bit
+  EXPECT_EQ(images_in_view({0.05, 0.05, 0.05}, d, true).size(), 8u);
+  EXPECT_EQ(images_in_view({0.05, 0.05, 0.05}, d, false).size(), 7u);
+  EXPECT_EQ(images_in_view({0.5, 1, 2}, d, true).size(), 1u);
+  d.periodic[1] = d.periodic[2] = false;
+  EXPECT_EQ(images_in_view({0.05, 0.05, 0.05}, d, true).size(), 2u);
+  EXPECT_EQ(wrapped_into_box({1.25, -0.5, 9.0}, d).y, -0.5);    // not periodic: as is
+  // Outside the view: nothing, not even the centre.
+  EXPECT_TRUE(images_in_view({0.5, 1, 9}, d, true).empty());
+}

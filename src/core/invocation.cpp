@@ -54,43 +54,6 @@ bool in_subdomain(Vec3 x, const Domain &d)
   return true;
 }
 
-// A centre wrapped into the box in its periodic dimensions, as the host
-// wraps an atom that left the box.
-Vec3 wrapped_centre(Vec3 c, const Domain &d)
-{
-  for (int k = 0; k < 3; ++k) {
-    if (!d.periodic[k]) continue;
-    const double period = d.hi[k] - d.lo[k];
-    if (c[k] < d.lo[k]) c[k] += period;
-    if (c[k] >= d.hi[k]) c[k] -= period;
-    if (c[k] < d.lo[k] || c[k] >= d.hi[k])    // far out, or rounding at an edge
-      c[k] = std::min(std::max(d.lo[k], c[k] - period * std::floor((c[k] - d.lo[k]) / period)),
-                      std::nextafter(d.hi[k], d.lo[k]));
-  }
-  return c;
-}
-
-// The centre and its periodic images (shifted by one box length) that lie
-// inside this process's view, as the host's ghosts would.
-std::vector<Vec3> images_in_view(Vec3 c, const Domain &d)
-{
-  std::vector<Vec3> out;
-  for (int i = -1; i <= 1; ++i)
-    for (int j = -1; j <= 1; ++j)
-      for (int k = -1; k <= 1; ++k) {
-        const int shift[3] = {i, j, k};
-        Vec3 image = c;
-        bool inside = true;
-        for (int m = 0; m < 3 && inside; ++m) {
-          if (shift[m] != 0 && !d.periodic[m]) inside = false;
-          image[m] += shift[m] * (d.hi[m] - d.lo[m]);
-          inside = inside && image[m] >= d.view_lo[m] && image[m] <= d.view_hi[m];
-        }
-        if (inside) out.push_back(image);
-      }
-  return out;
-}
-
 std::string format(const char *fmt, double a, double b = 0)
 {
   char line[300];
@@ -192,7 +155,7 @@ void apply_to_view(const std::vector<double> &all, const Domain &domain,
     } else {
       moved.x = moved.x + v;
     }
-    for (const Vec3 &image : images_in_view(wrapped_centre(moved.x, domain), domain)) {
+    for (const Vec3 &image : images_in_view(wrapped_into_box(moved.x, domain), domain, true)) {
       Particle p = moved;
       p.x = image;
       p.owned = false;

@@ -114,24 +114,13 @@ template <class F> void for_each_group(int n, int limit, F &&f)
         }
 }
 
-Vec3 wrapped(Vec3 c, const Domain &domain)
-{
-  for (int d = 0; d < 3; ++d) {
-    if (!domain.periodic[d]) continue;
-    const double period = domain.hi[d] - domain.lo[d];
-    c[d] -= period * std::floor((c[d] - domain.lo[d]) / period);
-    if (c[d] >= domain.hi[d]) c[d] = domain.lo[d];    // rounding at the top edge
-  }
-  return c;
-}
-
 // Inside the walls (non-periodic dimensions) with radius r, and the
 // region, if any, holds the wrapped centre.
 bool admissible(Vec3 c, double r, const Domain &domain)
 {
   for (int d = 0; d < 3; ++d)
     if (!domain.periodic[d] && (c[d] - r < domain.lo[d] || c[d] + r > domain.hi[d])) return false;
-  return !domain.region || domain.region(wrapped(c, domain));
+  return !domain.region || domain.region(wrapped_into_box(c, domain));
 }
 
 // The spheres a process sees while it relocates: the particles, then the
@@ -510,7 +499,9 @@ private:
       return it == start.end() ? scene_.x(j) : it->second;
     };
     // With a region, only spheres inside it are pushed, and they stay in it.
-    auto in_region = [&](Vec3 x) { return !domain_.region || domain_.region(wrapped(x, domain_)); };
+    auto in_region = [&](Vec3 x) {
+      return !domain_.region || domain_.region(wrapped_into_box(x, domain_));
+    };
     auto movable = [&](int j) {
       return j == fresh ||
              (scene_.pushable(j) && norm(origin(j) - c) <= reach && in_region(origin(j)));
@@ -611,19 +602,8 @@ private:
     const Vec3 c = scene_.x(fresh);
     const double r = scene_.r(fresh);
     touched.push_back(fresh);
-    for (int i = -1; i <= 1; ++i)
-      for (int j = -1; j <= 1; ++j)
-        for (int k = -1; k <= 1; ++k) {
-          const int shift[3] = {i, j, k};
-          Vec3 image = c;
-          bool skip = (i == 0 && j == 0 && k == 0);
-          for (int d = 0; d < 3 && !skip; ++d) {
-            skip = shift[d] != 0 && !domain_.periodic[d];
-            image[d] += shift[d] * (domain_.hi[d] - domain_.lo[d]);
-            skip = skip || image[d] < domain_.view_lo[d] || image[d] > domain_.view_hi[d];
-          }
-          if (!skip) touched.push_back(scene_.add(image, r, scene_.id(fresh), true, true));
-        }
+    for (const Vec3 &image : images_in_view(c, domain_, false))
+      touched.push_back(scene_.add(image, r, scene_.id(fresh), true, true));
     return fresh;
   }
 };
@@ -663,6 +643,37 @@ Footprint footprint(const Settings &s, double target_rmax, double largest_r)
   f.write = placed + target_rmax + 2 * s.rmax + s.push;
   f.read = f.write + std::max(s.rmax + largest_r, s.zone + s.rmax + largest_r);
   return f;
+}
+
+Vec3 wrapped_into_box(Vec3 c, const Domain &domain)
+{
+  for (int d = 0; d < 3; ++d) {
+    if (!domain.periodic[d]) continue;
+    const double period = domain.hi[d] - domain.lo[d];
+    c[d] -= period * std::floor((c[d] - domain.lo[d]) / period);
+    if (c[d] >= domain.hi[d]) c[d] = domain.lo[d];    // rounding at the top edge
+  }
+  return c;
+}
+
+std::vector<Vec3> images_in_view(Vec3 c, const Domain &domain, bool with_centre)
+{
+  std::vector<Vec3> out;
+  for (int i = -1; i <= 1; ++i)
+    for (int j = -1; j <= 1; ++j)
+      for (int k = -1; k <= 1; ++k) {
+        const int shift[3] = {i, j, k};
+        if (!with_centre && i == 0 && j == 0 && k == 0) continue;
+        Vec3 image = c;
+        bool inside = true;
+        for (int d = 0; d < 3 && inside; ++d) {
+          inside = shift[d] == 0 || domain.periodic[d];
+          image[d] += shift[d] * (domain.hi[d] - domain.lo[d]);
+          inside = inside && image[d] >= domain.view_lo[d] && image[d] <= domain.view_hi[d];
+        }
+        if (inside) out.push_back(image);
+      }
+  return out;
 }
 
 bool spheres_overlap(Vec3 a, double ra, Vec3 b, double rb, double tol)

@@ -89,6 +89,13 @@ struct Stats {
   void add(const Stats &o);
 };
 
+// c wrapped into the box in its periodic dimensions, as the host wraps an
+// atom that left it.
+Vec3 wrapped_into_box(Vec3 c, const Domain &domain);
+// c and its periodic images (shifted by one box length) that lie inside the
+// process's view, as the host's ghosts would; with_centre false leaves c out.
+std::vector<Vec3> images_in_view(Vec3 c, const Domain &domain, bool with_centre);
+
 // True when spheres (a, ra) and (b, rb) overlap by more than tol * min(ra, rb).
 bool spheres_overlap(Vec3 a, double ra, Vec3 b, double rb, double tol);
 
