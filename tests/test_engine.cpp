@@ -1,11 +1,13 @@
 // Engine tests on synthetic scenes: a jittered polydisperse packing with a
 // bar of overlapping spheres through it, seen by one process.
+#include "cell_grid.h"
 #include "relocation.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
+#include <stdexcept>
 
 using namespace reinforce;
 
@@ -528,4 +530,63 @@ TEST(Engine, WrappingAndImagesInView)
   EXPECT_EQ(wrapped_into_box({1.25, -0.5, 9.0}, d).y, -0.5);    // not periodic: as is
   // Outside the view: nothing, not even the centre.
   EXPECT_TRUE(images_in_view({0.5, 1, 9}, d, true).empty());
+}
+
+// The grid against brute force: every point within the range of a query is
+// listed exactly once (here, on a grid whose cells are smaller than the
+// range, so a query spans many cells), also far from the origin, at negative
+// coordinates, after erasing and moving points, past many table growths;
+// and insert_around lists a point in the one cell of every point within a
+// cell size of it.
+TEST(CellGrid, QueriesMatchBruteForce)
+{
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> unif(-1, 1);
+  for (const Vec3 offset : {Vec3{0, 0, 0}, Vec3{-3e3, 1e4, -7e2}}) {
+    const double cell = 0.05;
+    CellGrid grid(cell);
+    std::vector<Vec3> x(3000);
+    std::vector<bool> present(x.size(), true);
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      x[i] = offset + Vec3{unif(rng), unif(rng), unif(rng)};
+      grid.insert(x[i], static_cast<int>(i));
+    }
+    for (std::size_t i = 0; i < x.size(); i += 7) {
+      grid.erase(x[i], static_cast<int>(i));
+      present[i] = false;
+    }
+    for (std::size_t i = 3; i < x.size(); i += 11) {
+      if (!present[i]) continue;
+      const Vec3 to = x[i] + Vec3{0.2 * unif(rng), 0.2 * unif(rng), 0.2 * unif(rng)};
+      grid.move(x[i], to, static_cast<int>(i));
+      x[i] = to;
+    }
+    for (int q = 0; q < 200; ++q) {
+      const Vec3 c = offset + Vec3{1.2 * unif(rng), 1.2 * unif(rng), 1.2 * unif(rng)};
+      const double range = 0.03 + 0.15 * (unif(rng) + 1);
+      std::vector<int> seen(x.size(), 0);
+      grid.for_each_near(c, range, [&](int i) { ++seen[i]; });
+      for (std::size_t i = 0; i < x.size(); ++i) {
+        EXPECT_LE(seen[i], present[i] ? 1 : 0);
+        if (present[i] && norm(x[i] - c) <= range) {
+          EXPECT_EQ(seen[i], 1) << i;
+        }
+      }
+    }
+    CellGrid around(cell);
+    for (std::size_t i = 0; i < 500; ++i) around.insert_around(x[i], static_cast<int>(i));
+    for (int q = 0; q < 300; ++q) {
+      const Vec3 c = offset + Vec3{unif(rng), unif(rng), unif(rng)};
+      std::vector<int> seen(500, 0);
+      around.for_each_in_cell(c, [&](int i) { ++seen[i]; });
+      for (std::size_t i = 0; i < 500; ++i) {
+        EXPECT_LE(seen[i], 1);
+        if (norm(x[i] - c) <= cell) {
+          EXPECT_EQ(seen[i], 1) << i;
+        }
+      }
+    }
+  }
+  EXPECT_THROW(CellGrid(0.0), std::invalid_argument);
+  EXPECT_THROW(CellGrid(NAN), std::invalid_argument);
 }

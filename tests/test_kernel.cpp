@@ -455,3 +455,58 @@ TEST(Kernel, ThreeTangentDegenerateInputsGiveNothing)
   ASSERT_EQ(n, 1);
   EXPECT_NEAR(norm(out[0] - Vec3{2, 0, 0}), 0, 1e-12);
 }
+
+// The pre-polish filter: accepting everything changes nothing (bit for bit);
+// each solution it sees is within kAcceptResidual r of the polished one it
+// becomes (the slack callers allow for); what it rejects is not returned,
+// and the rest is returned as without it. Random well-posed groups around a
+// known sphere, radii over three decades.
+TEST(Kernel, PrePolishFilterOnlyDropsWhatItRejects)
+{
+  std::mt19937_64 rng(21);
+  std::uniform_real_distribution<double> unif(0, 1);
+  int checked = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Sphere known{{unif(rng) * 100, unif(rng) * 100, unif(rng) * 100},
+                       std::pow(10.0, -1 + 2 * unif(rng))};
+    Vec3 dir[4];
+    double radius[4];
+    for (int i = 0; i < 4; ++i) {
+      dir[i] = random_unit(rng);
+      radius[i] = known.r * std::pow(10.0, -0.5 + unif(rng));
+    }
+    Sphere in[4];
+    around(known, dir, radius, in);
+    Sphere plain[2], all[2], some[2];
+    const int n = tangent_spheres_inversion(in, plain, 2);
+    std::vector<Sphere> seen;
+    const int n_all = tangent_spheres_inversion(in, all, 2, [&](const Sphere &s) {
+      seen.push_back(s);
+      return true;
+    });
+    ASSERT_EQ(n_all, n);
+    for (int k = 0; k < n; ++k) {
+      EXPECT_EQ(all[k].r, plain[k].r);
+      EXPECT_EQ(all[k].c.x, plain[k].c.x);
+      EXPECT_EQ(all[k].c.y, plain[k].c.y);
+      EXPECT_EQ(all[k].c.z, plain[k].c.z);
+      double nearest = INFINITY;
+      for (const Sphere &s : seen)
+        nearest = std::min(nearest, norm(s.c - all[k].c) + std::fabs(s.r - all[k].r));
+      EXPECT_LE(nearest, kAcceptResidual * all[k].r);
+    }
+    // Keep only solutions larger than the known sphere (the other one, if any).
+    const int n_some = tangent_spheres_inversion(
+        in, some, 2, [&](const Sphere &s) { return s.r > known.r * 1.001; });
+    int expected = 0;
+    for (int k = 0; k < n; ++k)
+      if (plain[k].r > known.r * 1.001) {
+        ASSERT_LT(expected, n_some);
+        EXPECT_EQ(some[expected].r, plain[k].r);
+        ++expected;
+      }
+    EXPECT_EQ(n_some, expected);
+    checked += n;
+  }
+  EXPECT_GT(checked, 2000);
+}

@@ -4,23 +4,62 @@
 
 namespace reinforce {
 
+namespace {
+constexpr int kInitialBits = 6;
+}
+
 CellGrid::CellGrid(double cell_size)
+    : shift_(64 - kInitialBits), slot_cell_(std::size_t{1} << kInitialBits, -1)
 {
   if (!(cell_size > 0) || !std::isfinite(cell_size))
     throw std::invalid_argument("CellGrid: cell size must be positive and finite");
   inv_cell_ = 1.0 / cell_size;
 }
 
+// The cell of `key`, made empty if it was not there. The table is kept at
+// most half full, so probes stay short.
+std::vector<int> &CellGrid::cell(std::uint64_t key)
+{
+  int c = find_cell(key);
+  if (c >= 0) return cell_items_[c];
+  c = static_cast<int>(cell_key_.size());
+  cell_key_.push_back(key);
+  cell_items_.emplace_back();
+  if (2 * cell_key_.size() <= slot_cell_.size()) {
+    put_in_table(c);
+  } else {
+    --shift_;    // twice the slots, every cell hashed again
+    slot_cell_.assign(slot_cell_.size() * 2, -1);
+    for (int k = 0; k <= c; ++k) put_in_table(k);
+  }
+  return cell_items_[c];
+}
+
+void CellGrid::put_in_table(int c)
+{
+  std::size_t s = slot_of(cell_key_[c]);
+  while (slot_cell_[s] >= 0) s = (s + 1) & (slot_cell_.size() - 1);
+  slot_cell_[s] = c;
+}
+
 void CellGrid::insert(Vec3 x, int item)
 {
-  cells_[key(coord(x.x), coord(x.y), coord(x.z))].push_back(item);
+  cell(key(coord(x.x), coord(x.y), coord(x.z))).push_back(item);
+}
+
+void CellGrid::insert_around(Vec3 x, int item)
+{
+  const std::int64_t i = coord(x.x), j = coord(x.y), k = coord(x.z);
+  for (std::int64_t a = i - 1; a <= i + 1; ++a)
+    for (std::int64_t b = j - 1; b <= j + 1; ++b)
+      for (std::int64_t c = k - 1; c <= k + 1; ++c) cell(key(a, b, c)).push_back(item);
 }
 
 void CellGrid::erase(Vec3 x, int item)
 {
-  auto it = cells_.find(key(coord(x.x), coord(x.y), coord(x.z)));
-  if (it == cells_.end()) return;
-  std::vector<int> &items = it->second;
+  const int c = find_cell(key(coord(x.x), coord(x.y), coord(x.z)));
+  if (c < 0) return;
+  std::vector<int> &items = cell_items_[c];
   for (std::size_t k = 0; k < items.size(); ++k)
     if (items[k] == item) {
       items.erase(items.begin() + static_cast<std::ptrdiff_t>(k));
@@ -37,8 +76,7 @@ void CellGrid::move(Vec3 from, Vec3 to, int item)
 }
 
 // Cell coordinates are wrapped to 21 bits each. Distinct cells that share a
-// key only share a bucket; the callers' exact distance test keeps the answer
-// right.
+// key share a cell; the callers' exact distance test keeps the answer right.
 std::uint64_t CellGrid::key(std::int64_t i, std::int64_t j, std::int64_t k)
 {
   const std::uint64_t mask = (1u << 21) - 1;

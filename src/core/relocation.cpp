@@ -114,6 +114,21 @@ template <class F> void for_each_group(int n, int limit, F &&f)
         }
 }
 
+// Surface gaps between the candidates, pair by pair (row-major, n x n): the
+// groups and triples reuse each pair many times.
+template <class SphereOf>
+std::vector<double> pair_gaps(const std::vector<Candidate> &near, SphereOf &&sphere_of)
+{
+  const std::size_t n = near.size();
+  std::vector<double> gap(n * n, 0.0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const Sphere a = sphere_of(near[i].index), b = sphere_of(near[j].index);
+      gap[i * n + j] = gap[j * n + i] = norm(a.c - b.c) - a.r - b.r;
+    }
+  return gap;
+}
+
 // Inside the walls (non-periodic dimensions) with radius r, and the
 // region, if any, holds the wrapped centre.
 bool admissible(Vec3 c, double r, const Domain &domain)
@@ -305,6 +320,11 @@ private:
   std::unordered_map<std::int64_t, std::vector<int>> copies_;    // present copies by id
 };
 
+// Radii a search still wants: [lo, hi].
+struct RadiusRange {
+  double lo, hi;
+};
+
 // A place for a target: the centre of a sphere tangent to four present
 // spheres that overlaps none (a void), with that sphere's radius.
 struct Void {
@@ -362,41 +382,61 @@ private:
 
   // Runs the kernel over the groups of four nearest candidates of the
   // target's old sphere; calls take(solution) for each solution whose
-  // radius lies in (0, rho_max] and whose centre is within the shift bound;
-  // stops when take returns true.
-  template <class F> void for_each_solution(Vec3 x0, double r0, double rho_max, F &&take)
+  // radius lies in the range wanted() gives (asked again after each take,
+  // so a caller that found a good solution narrows the search), whose
+  // centre is within the shift bound and that overlaps none of the
+  // candidates; stops when take returns true.
+  template <class Range, class F>
+  void for_each_solution(Vec3 x0, double r0, Range &&wanted, F &&take)
   {
     const std::vector<Candidate> near =
         scene_.candidates(x0, r0, s_.search, candidates_needed(s_.tries), kMaxRebarCandidates);
     const double max_shift = r0 + s_.search;
-    for_each_group(static_cast<int>(near.size()), s_.tries, [&](int a, int b, int c, int d) {
-      const Sphere group[4] = {scene_.sphere(near[a].index), scene_.sphere(near[b].index),
-                               scene_.sphere(near[c].index), scene_.sphere(near[d].index)};
-      // Two spheres whose gap exceeds 2 rho_max share no tangent sphere of
-      // radius rho_max or less: skip the solve.
+    RadiusRange radii = wanted();
+    // Before the Newton polish, the same tests with room for what the
+    // polish may move (kAcceptResidual of the radius): most solutions fail
+    // them, and are not polished.
+    const double slack = kAcceptResidual;
+    auto worth_polishing = [&](const Sphere &sol) {
+      return sol.r >= radii.lo * (1 - slack) && sol.r <= radii.hi * (1 + slack) &&
+             norm(sol.c - x0) <= max_shift + slack * sol.r &&
+             !overlaps_one_of(near, sol.c, sol.r, slack * sol.r);
+    };
+    const std::vector<double> gap = pair_gaps(near, [&](int j) { return scene_.sphere(j); });
+    const std::size_t n = near.size();
+    for_each_group(static_cast<int>(n), s_.tries, [&](int a, int b, int c, int d) {
+      // Two spheres whose gap exceeds 2 rho share no tangent sphere of
+      // radius rho or less: skip the solve.
+      const int member[4] = {a, b, c, d};
       for (int i = 0; i < 4; ++i)
         for (int j = i + 1; j < 4; ++j)
-          if (norm(group[i].c - group[j].c) - group[i].r - group[j].r > 2 * rho_max) return false;
+          if (gap[member[i] * n + member[j]] > 2 * radii.hi) return false;
+      const Sphere group[4] = {scene_.sphere(near[a].index), scene_.sphere(near[b].index),
+                               scene_.sphere(near[c].index), scene_.sphere(near[d].index)};
       Sphere found[2];
-      const int nfound = tangent_spheres_inversion(group, found, s_.newton_steps);
+      const int nfound = tangent_spheres_inversion(group, found, s_.newton_steps, worth_polishing);
       stats_.solves++;
       for (int k = 0; k < nfound; ++k) {
         const Sphere &sol = found[k];
-        if (!(sol.r > 0) || sol.r > rho_max || norm(sol.c - x0) > max_shift) continue;
+        if (!(sol.r > 0) || sol.r < radii.lo || sol.r > radii.hi || norm(sol.c - x0) > max_shift)
+          continue;
         if (overlaps_one_of(near, sol.c, sol.r)) continue;    // take() would reject it too
         if (take(sol)) return true;
+        radii = wanted();
       }
       return false;
     });
   }
 
   // True when sphere (c, r) overlaps one of the candidates by more than
-  // tol (the test of Scene::fits): most solutions fail on the nearest
-  // spheres, and this list is shorter than a grid query.
-  bool overlaps_one_of(const std::vector<Candidate> &near, Vec3 c, double r) const
+  // tol (the test of Scene::fits) plus `slack` (a length): most solutions
+  // fail on the nearest spheres, and this list is shorter than a grid query.
+  bool overlaps_one_of(const std::vector<Candidate> &near, Vec3 c, double r, double slack = 0) const
   {
-    for (const Candidate &q : near)
-      if (spheres_overlap(c, r, scene_.x(q.index), scene_.r(q.index), s_.tol)) return true;
+    for (const Candidate &q : near) {
+      const double rq = scene_.r(q.index);
+      if (r + rq - norm(c - scene_.x(q.index)) > s_.tol * std::min(r, rq) + slack) return true;
+    }
     return false;
   }
 
@@ -410,14 +450,23 @@ private:
     const std::vector<Candidate> near = scene_.candidates(
         x0, r0, s_.search, candidates_needed_for_triples(s_.tries), kMaxRebarCandidates);
     const double max_shift = r0 + s_.search;
+    const std::vector<double> gap = pair_gaps(near, [&](int j) { return scene_.sphere(j); });
+    const std::size_t n = near.size();
+    // A centre tangent to candidate i is at least its gap from x0 (less the
+    // kernel's 1e-9 (r0 + r_i), doubled for the rounding of the gap): with
+    // the candidates nearest first, once the newest one of a triple is that
+    // far, no later triple can beat the best.
+    double largest_r = 0;
+    for (const Candidate &q : near) largest_r = std::max(largest_r, scene_.r(q.index));
+    const double margin = 2e-9 * (r0 + largest_r);
     best.score = INFINITY;
-    for_each_triple(static_cast<int>(near.size()), s_.tries, [&](int a, int b, int c) {
+    for_each_triple(static_cast<int>(n), s_.tries, [&](int a, int b, int c) {
+      if (near[c].gap - margin >= best.score) return true;
+      // Two spheres whose gap exceeds 2 r0 cannot both touch it.
+      if (gap[a * n + b] > 2 * r0 || gap[a * n + c] > 2 * r0 || gap[b * n + c] > 2 * r0)
+        return false;
       const Sphere group[3] = {scene_.sphere(near[a].index), scene_.sphere(near[b].index),
                                scene_.sphere(near[c].index)};
-      // Two spheres whose gap exceeds 2 r0 cannot both touch it.
-      for (int i = 0; i < 3; ++i)
-        for (int j = i + 1; j < 3; ++j)
-          if (norm(group[i].c - group[j].c) - group[i].r - group[j].r > 2 * r0) return false;
       Vec3 found[2];
       const int nfound = centres_tangent_to_three(group, r0, found);
       stats_.solves++;
@@ -440,7 +489,13 @@ private:
   {
     bool found = false;
     best.score = INFINITY;
-    for_each_solution(x0, r0, s_.rmax, [&](const Sphere &sol) {
+    // With choose closest, once a void is found only radii closer to r0
+    // can do better: the search narrows to them.
+    auto wanted = [&]() {
+      if (s_.choice != Choice::Closest || !found) return RadiusRange{s_.rmin, s_.rmax};
+      return RadiusRange{std::max(s_.rmin, r0 - best.score), std::min(s_.rmax, r0 + best.score)};
+    };
+    for_each_solution(x0, r0, wanted, [&](const Sphere &sol) {
       if (sol.r < s_.rmin || !admissible(sol.c, sol.r, domain_)) return false;
       const double score = s_.choice == Choice::Closest ? std::fabs(sol.r - r0) : 0.0;
       double deepest;
@@ -458,24 +513,27 @@ private:
   std::vector<Void> find_voids(Vec3 x0, double r0)
   {
     std::vector<Void> voids;
-    const double rho_max = std::max(r0, s_.rmax);
+    const RadiusRange radii{0, std::max(r0, s_.rmax)};
     int order = 0;
-    for_each_solution(x0, r0, rho_max, [&](const Sphere &sol) {
-      if (!admissible(sol.c, std::min(sol.r, r0), domain_)) return false;
-      const double score = s_.choice == Choice::Closest ? std::fabs(sol.r - r0) : order;
-      if (voids.size() == kMaxAttempts && score >= voids.back().score) return false;
-      for (const Void &v : voids)
-        if (norm(v.c - sol.c) <= 1e-9 * r0) return false;
-      double deepest;
-      if (!scene_.fits(sol.c, sol.r, s_.tol, deepest)) return false;
-      ++order;
-      const Void v{sol.c, sol.r, score};
-      voids.insert(std::upper_bound(voids.begin(), voids.end(), v,
-                                    [](const Void &a, const Void &b) { return a.score < b.score; }),
-                   v);
-      if (voids.size() > kMaxAttempts) voids.pop_back();
-      return false;
-    });
+    for_each_solution(
+        x0, r0, [&]() { return radii; },
+        [&](const Sphere &sol) {
+          if (!admissible(sol.c, std::min(sol.r, r0), domain_)) return false;
+          const double score = s_.choice == Choice::Closest ? std::fabs(sol.r - r0) : order;
+          if (voids.size() == kMaxAttempts && score >= voids.back().score) return false;
+          for (const Void &v : voids)
+            if (norm(v.c - sol.c) <= 1e-9 * r0) return false;
+          double deepest;
+          if (!scene_.fits(sol.c, sol.r, s_.tol, deepest)) return false;
+          ++order;
+          const Void v{sol.c, sol.r, score};
+          voids.insert(
+              std::upper_bound(voids.begin(), voids.end(), v,
+                               [](const Void &a, const Void &b) { return a.score < b.score; }),
+              v);
+          if (voids.size() > kMaxAttempts) voids.pop_back();
+          return false;
+        });
     return voids;
   }
 
@@ -803,11 +861,14 @@ std::vector<Particle> near_targets(const std::vector<Particle> &particles, const
   index.clear();
   if (targets.empty()) return out;
   const double read = footprint(settings, target_rmax, largest_r).read;
+  // Each target listed in the cells around its own (cells `read` wide): a
+  // particle within `read` of it finds it in its one cell. One lookup per
+  // particle, as this runs every round over the whole view.
   CellGrid grid(read);
-  for (std::size_t t : targets) grid.insert(particles[t].x, static_cast<int>(t));
+  for (std::size_t t : targets) grid.insert_around(particles[t].x, static_cast<int>(t));
   for (std::size_t i = 0; i < particles.size(); ++i) {
     bool near = false;
-    grid.for_each_near(particles[i].x, read, [&](int t) {
+    grid.for_each_in_cell(particles[i].x, [&](int t) {
       near = near || norm(particles[t].x - particles[i].x) <= read;
     });
     if (!near) continue;

@@ -129,9 +129,10 @@ void local_polish(const Local &L, Sphere &s, int steps)
 // Keeps a local solution if it is valid, polished as asked; returns the new
 // count. Drops a repeat of the previous solution (a double root).
 int keep_solution(const Sphere in[4], const Local &L, Sphere s, int newton_steps, Sphere out[2],
-                  int count)
+                  int count, const std::function<bool(const Sphere &)> &wanted = {})
 {
   if (!(s.r > 0) || !is_finite(s.c)) return count;
+  if (wanted && !wanted(Sphere{L.origin + L.scale * s.c, L.scale * s.r})) return count;
   if (newton_steps > 0) local_polish(L, s, newton_steps);
   if (!(local_residual(L, s) <= kAcceptResidual)) return count;
   // The contract is on the global spheres: far from the origin, or with
@@ -175,7 +176,8 @@ bool polish_tangent_sphere(const Sphere in[4], Sphere &s, int steps)
   return true;
 }
 
-int tangent_spheres_inversion(const Sphere in[4], Sphere out[2], int newton_steps)
+int tangent_spheres_inversion(const Sphere in[4], Sphere out[2], int newton_steps,
+                              const std::function<bool(const Sphere &)> &wanted)
 {
   Local L;
   if (!make_local(in, L)) return 0;
@@ -217,10 +219,15 @@ int tangent_spheres_inversion(const Sphere in[4], Sphere out[2], int newton_step
     // Back to a sphere through O: centre n / (2h), radius 1 / (2h); then
     // subtract the shrink.
     const double grown = 0.5 / h;
-    count = keep_solution(in, L, Sphere{grown * n, grown - m}, newton_steps, out, count);
+    count = keep_solution(in, L, Sphere{grown * n, grown - m}, newton_steps, out, count, wanted);
     if (t == 0) break;
   }
   return sorted(out, count);
+}
+
+int tangent_spheres_inversion(const Sphere in[4], Sphere out[2], int newton_steps)
+{
+  return tangent_spheres_inversion(in, out, newton_steps, {});
 }
 
 int tangent_spheres_algebraic(const Sphere in[4], Sphere out[2], int newton_steps)

@@ -8,6 +8,8 @@
 
 #include "vec3.h"
 
+#include <functional>
+
 namespace reinforce {
 
 struct Sphere {
@@ -27,6 +29,14 @@ double tangency_residual(const Sphere in[4], const Sphere &s);
 // 0) when the three inverted centres are nearly collinear.
 // newton_steps > 0 polishes each solution with Newton steps on the four
 // tangency equations. Returns the number of solutions written to out (0..2).
+//
+// wanted, if given, sees each solution before the polish (in global
+// coordinates) and drops it by returning false: a caller's test of what it
+// would reject anyway (too large, overlapping a neighbour) saves the Newton
+// steps of most solutions. Its test must allow for the polish moving the
+// solution (by about the unpolished residual, at most kAcceptResidual r).
+int tangent_spheres_inversion(const Sphere in[4], Sphere out[2], int newton_steps,
+                              const std::function<bool(const Sphere &)> &wanted);
 int tangent_spheres_inversion(const Sphere in[4], Sphere out[2], int newton_steps = 0);
 
 // Direct algebraic reference: linear system for the centre in terms of r,
