@@ -328,9 +328,13 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
     double any = 0;
     for (double &n : per_round) any += n = host.sum(n);
     if (any > 0) {
+      // The ghosts learn which atoms are targets (a forward communication:
+      // the atoms and their order stay as they are).
       host.forward_pending();
       a = host.atoms();
-      view = make_view(a, margin, local);
+      for (std::size_t k = 0; k < view.size(); ++k)
+        if (view[k].role != Role::Rebar)
+          view[k].role = a.pending[local[k]] ? Role::Target : Role::Matrix;
       double largest_packing = 0;
       totals.packing_overlaps = host.sum(static_cast<double>(
           count_packing_overlaps(view, settings.tol, settings.rmin, largest_packing)));
