@@ -3,7 +3,9 @@
 # scenes in one run, and writes docs/benchmarks.md (bench/report.py): every
 # sentence and number of that page comes from this run.
 #
-#   bash bench/run.sh            full run (about 15 minutes on 2 cores)
+#   bash bench/run.sh            full run (about 15 minutes on 2 cores, plus
+#                                about 4 the first time: the make_packing.lmp
+#                                reference, then cached in bench/out/scenes)
 #   bash bench/run.sh --quick    one small scene, one repeat, every method and
 #                                table; the page goes to a scratch folder
 #                                (run by the test suite so the harness cannot rot)
@@ -23,7 +25,10 @@
 #             lost against elapsed time, a dump every chunk of steps
 #   grow      the reference a user would otherwise make: the same packing law
 #             grown around the bars from the start (build/tests/grow_packing
-#             --around-bars), its wall time and its own scene quality
+#             --around-bars), its wall time and its own scene quality; for
+#             the 0.60 beam also the beam's own law, the LAMMPS growth that
+#             made its packings (examples/beam/make_packing.lmp -var bars,
+#             several minutes the first time, then cached)
 # plus the whole process time and peak memory (/usr/bin/time), scene
 # quality (build/tests/scene_quality, before and after dumps, against the
 # grown reference where there is one), a narrow-size scene (radii 4-5 mm),
@@ -66,10 +71,14 @@ curves="$out/relax.tsv"
 qual="$out/quality.tsv"
 meta="$out/meta.tsv"
 refs="$out/reference.tsv"
+versus="$out/versus.tsv"      # each method against a second reference (make_packing.lmp's)
+profiles="$out/profile.tsv"   # the fix's defaults: profile beside each reference's
 echo -e "scene\tatoms\tmethod\tparam\tnp\trep\ttargets\trelocated\tdeleted\tvolume_before\tvolume_after\toverlap\tsolves\top_seconds\twall_seconds\tpeak_kb\tremoved\trounds\trebar\tbalance\tbusiest" > "$results"
 echo -e "scene\tchunk\tseconds\tatoms\tmatrix_rebar\tmatrix_matrix" > "$curves"
-echo -e "scene\tmethod\tparam\tshell_ratio\tshell_ratio_se\tremoved_ratio\tks\ttargets\tdeleted\tmoved_nontargets\tbulk\tref_bulk\tref_shell_ratio\tshell_vs_reference" > "$qual"
+echo -e "scene\tmethod\tparam\tshell_ratio\tshell_ratio_se\tremoved_ratio\tks\ttargets\tdeleted\tmoved_nontargets\tbulk\tref_bulk\tref_shell_ratio\tshell_vs_reference\tbin_diff_max" > "$qual"
 echo -e "scene\tkind\tseed\tmatrix\trebar\tbox\tphi\tradii\twall_seconds\tcpu_seconds\tgrown\tbulk\tshell_ratio\tshell_ratio_se" > "$refs"
+echo -e "scene\treference\tmethod\tparam\tshell_ratio\tshell_ratio_se\tref_shell_ratio\tshell_vs_reference\tbin_diff_max\tbulk\tref_bulk" > "$versus"
+echo -e "scene\treference\tmethod\tparam\tlo_rmax\thi_rmax\tphi\tphi_se\tref_phi\tref_phi_se" > "$profiles"
 echo -e "key\tvalue" > "$meta"
 meta() { echo -e "$1\t$2" >> "$meta"; }
 meta quick "$quick"
@@ -144,21 +153,47 @@ run_delete() {
 }
 # quality_of NAME SCENE METHOD PARAM RMIN RMAX [AFTER]: scene_quality of the
 # last run's after.dump (or AFTER; no before then when SCENE is "-"),
-# against the grown reference ${refs_of[NAME]} when there is one.
-declare -A refs_of=()
+# against the grown reference ${refs_of[NAME]} when there is one, and
+# again against ${lammps_refs_of[NAME]} (make_packing.lmp's) when there is
+# one (a row of versus.tsv). For the fix's defaults the profiles beside each
+# reference go to profile.tsv.
+declare -A refs_of=() lammps_refs_of=()
+quality_value() {    # quality_value LINE KEY: a value from a QUALITY line
+  tr ' ' '\n' <<<"$1" | awk -F= -v k="$2" '$1 == k {print $2}'
+}
+profile_rows() {    # profile_rows NAME REFERENCE METHOD PARAM < scene_quality output
+  sed -n 's/^ *\[ *\([0-9.e+-]*\), *\([0-9.e+-]*\)) rmax *\([0-9.]*\) +- \([0-9.]*\) .* ref \([0-9.]*\) +- \([0-9.]*\) .*/\1\t\2\t\3\t\4\t\5\t\6/p' |
+    awk -v p="$1"$'\t'"$2"$'\t'"$3"$'\t'"$4" '{print p "\t" $0}' >> "$profiles"
+}
 quality_of() {
-  local name=$1 scene=$2 method=$3 param=$4 rmin=$5 rmax=$6 after=${7:-$last_run/after.dump} line
-  local args=(--after "$after" --rmin "$rmin" --rmax "$rmax" --quiet-profile)
+  local name=$1 scene=$2 method=$3 param=$4 rmin=$5 rmax=$6 after=${7:-$last_run/after.dump} line out2
+  local quiet=(--quiet-profile)
+  [ "$method" = "fix defaults" ] && quiet=()
+  local args=(--after "$after" --rmin "$rmin" --rmax "$rmax" "${quiet[@]}")
   [ "$scene" != - ] && args+=(--before "$(before_dump "$scene")")
   [ -n "${refs_of[$name]:-}" ] && args+=(--reference "${refs_of[$name]}")
-  line=$("$quality" "${args[@]}" ${QUALITY_ARGS:-} | grep '^QUALITY') || { echo "bench: scene_quality failed" >&2; exit 1; }
+  out2=$("$quality" "${args[@]}" ${QUALITY_ARGS:-}) || { echo "bench: scene_quality failed" >&2; exit 1; }
+  line=$(grep '^QUALITY' <<<"$out2") || { echo "bench: scene_quality failed" >&2; exit 1; }
+  [ -n "${refs_of[$name]:-}" ] && [ "$method" = "fix defaults" ] &&
+    profile_rows "$name" grow_packing "$method" "$param" <<<"$out2"
   local q=()
   for k in shell_ratio shell_ratio_se removed_ratio ks targets deleted moved_nontargets bulk ref_bulk \
-           ref_shell_ratio shell_vs_reference; do
-    q+=("$(tr ' ' '\n' <<<"$line" | awk -F= -v k="$k" '$1 == k {print $2}')")
+           ref_shell_ratio shell_vs_reference bin_diff_max; do
+    q+=("$(quality_value "$line" "$k")")
   done
   local IFS=$'\t'
   echo -e "$name\t$method\t$param\t${q[*]}" >> "$qual"
+  if [ -n "${lammps_refs_of[$name]:-}" ]; then
+    out2=$("$quality" --after "$after" --rmin "$rmin" --rmax "$rmax" --reference "${lammps_refs_of[$name]}" \
+      "${quiet[@]}") || { echo "bench: scene_quality failed against ${lammps_refs_of[$name]}" >&2; exit 1; }
+    line=$(grep '^QUALITY' <<<"$out2") || { echo "bench: scene_quality failed" >&2; exit 1; }
+    [ "$method" = "fix defaults" ] && profile_rows "$name" make_packing.lmp "$method" "$param" <<<"$out2"
+    q=()
+    for k in shell_ratio shell_ratio_se ref_shell_ratio shell_vs_reference bin_diff_max bulk ref_bulk; do
+      q+=("$(quality_value "$line" "$k")")
+    done
+    echo -e "$name\tmake_packing.lmp\t$method\t$param\t${q[*]}" >> "$versus"
+  fi
 }
 # grow_scene NAME KIND OUT SEED RMIN RMAX PHI GROW_ARGS...: a packing by
 # grow_packing (KIND "alone": the matrix, then the bars added, the fix's
@@ -194,6 +229,43 @@ grow_scene() {
     refs_of[$name]=$file
   fi
   echo -e "$name\t$kind\t$seed\t$matrix\t$rebar\t$box\t$phi\t$rmin-$rmax\t$wall\t$cpu\t$when\t${q[0]}\t${q[1]}\t${q[2]}" >> "$refs"
+}
+
+# lammps_ref NAME OUT PHI SEED BARS RMIN RMAX: the reference grown by the
+# beam's own packing law, examples/beam/make_packing.lmp with the bars
+# present (frozen) from the start, as a LAMMPS user would run it (Debian's
+# lmp, one process, several minutes). Cached in scenes/ like grow_scene:
+# OUT.grow holds the wall and CPU seconds and the date, then the key (the
+# arguments and checksums of the script and the bars file: another key
+# grows it again), OUT.packing its PACKING line. One row of reference.tsv
+# (kind "lammps"), its PACKING line in meta.tsv (packing_NAME), and its own
+# scene quality; quality_of then measures every method against it too.
+lammps_ref() {
+  local name=$1 file=$2 phi=$3 seed=$4 bars=$5 rmin=$6 rmax=$7 line
+  local script="$top/examples/beam/make_packing.lmp" plain_lmp
+  plain_lmp=$(command -v lmp || echo "$lmp")
+  local key="make_packing.lmp -var phi $phi -var seed $seed -var bars $(basename "$bars") script $(sha1sum < "$script" | cut -c1-12) bars $(sha1sum < "$bars" | cut -c1-12)"
+  if [ ! -f "$file" ] || [ ! -f "$file.grow" ] || [ ! -f "$file.packing" ] || [ "$(sed -n 2p "$file.grow")" != "$key" ]; then
+    rm -f "$file" "$file.packing"
+    echo "== $name: growing with make_packing.lmp (several minutes)"
+    (cd "$top/examples/beam" && /usr/bin/time -f "%e %U" -o "$file.time" "$plain_lmp" -in make_packing.lmp \
+      -var phi "$phi" -var seed "$seed" -var bars "$bars" -var out "$file" -log "$file.log" -screen none) &&
+      grep '^PACKING' "$file.log" | tail -1 | sed 's/^PACKING //' > "$file.packing" && [ -s "$file.packing" ] ||
+      { echo "bench: make_packing.lmp failed, see $file.log" >&2; tail -3 "$file.log" >&2; rm -f "$file"; exit 1; }
+    printf '%s %s\n%s\n' "$(cat "$file.time")" "$(date -u '+%Y-%m-%d_%H:%M_UTC')" "$key" > "$file.grow"
+    rm -f "$file.time"
+  fi
+  local wall cpu when matrix rebar box q=()
+  read -r wall cpu when < <(head -1 "$file.grow")
+  matrix=$(awk '/^Atoms/ {on = 1; next} /^Velocities/ {on = 0} on && NF >= 7 && $2 == 1 {n++} END {print n + 0}' "$file")
+  rebar=$(rebar_of "$file")
+  box=$(box_of "$file")
+  line=$("$quality" --after "$file" --rmin "$rmin" --rmax "$rmax" --quiet-profile | grep '^QUALITY') ||
+    { echo "bench: scene_quality failed on $file" >&2; exit 1; }
+  for k in bulk shell_ratio shell_ratio_se; do q+=("$(quality_value "$line" "$k")"); done
+  lammps_refs_of[$name]=$file
+  meta "packing_$name" "$(cat "$file.packing")"
+  echo -e "$name\tlammps\t$seed\t$matrix\t$rebar\t$box\t$phi\t$rmin-$rmax\t$wall\t$cpu\t$when\t${q[0]}\t${q[1]}\t${q[2]}" >> "$refs"
 }
 
 # bench_scene NAME DATAFILE RMIN RMAX RBAR REPEATS: every method, 1 process,
@@ -400,9 +472,12 @@ for phi in 050 060 064; do
 done
 # The references: the beam's law at 0.60 (and the narrow scene's) grown
 # around the beam's bars; compare and narrow measure against them.
+# beam060 has two: grow_packing's (our fast grower, a geometric protocol)
+# and make_packing.lmp's (the law that made the beam's packings, by LAMMPS).
 if part reference; then
   grow_scene beam060 around "$out/scenes/beam060_ref.data" 12 0.0025 0.0075 0.60 "${beam_bars[@]}"
   grow_scene narrow around "$out/scenes/narrow_ref.data" 12 0.004 0.005 0.60 "${beam_bars[@]}"
+  lammps_ref beam060 "$out/scenes/beam060_lammps_ref.data" 0.60 48271 "$beam/bars.data" 0.0025 0.0075
 fi
 part compare && for phi in 050 060 064; do
   bench_scene "beam$phi" "$out/scenes/beam$phi.data" 0.0025 0.0075 0.005 3
