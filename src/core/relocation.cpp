@@ -114,12 +114,12 @@ template <class F> void for_each_group(int n, int limit, F &&f)
         }
 }
 
-// Surface gaps between the candidates, pair by pair (row-major, n x n): the
-// groups and triples reuse each pair many times.
+// Surface gaps between the first n candidates, pair by pair (row-major,
+// n x n): the groups and triples reuse each pair many times.
 template <class SphereOf>
-std::vector<double> pair_gaps(const std::vector<Candidate> &near, SphereOf &&sphere_of)
+std::vector<double> pair_gaps(const std::vector<Candidate> &near, std::size_t n,
+                              SphereOf &&sphere_of)
 {
-  const std::size_t n = near.size();
   std::vector<double> gap(n * n, 0.0);
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j) {
@@ -397,13 +397,14 @@ private:
     // polish may move (kAcceptResidual of the radius): most solutions fail
     // them, and are not polished.
     const double slack = kAcceptResidual;
-    auto worth_polishing = [&](const Sphere &sol) {
+    const std::function<bool(const Sphere &)> worth_polishing = [&](const Sphere &sol) {
       return sol.r >= radii.lo * (1 - slack) && sol.r <= radii.hi * (1 + slack) &&
              norm(sol.c - x0) <= max_shift + slack * sol.r &&
              !overlaps_one_of(near, sol.c, sol.r, slack * sol.r);
     };
-    const std::vector<double> gap = pair_gaps(near, [&](int j) { return scene_.sphere(j); });
-    const std::size_t n = near.size();
+    // The first `tries` groups use only the nearest candidates_needed(tries).
+    const std::size_t n = std::min(near.size(), candidates_needed(s_.tries));
+    const std::vector<double> gap = pair_gaps(near, n, [&](int j) { return scene_.sphere(j); });
     for_each_group(static_cast<int>(n), s_.tries, [&](int a, int b, int c, int d) {
       // Two spheres whose gap exceeds 2 rho share no tangent sphere of
       // radius rho or less: skip the solve.
@@ -450,8 +451,8 @@ private:
     const std::vector<Candidate> near = scene_.candidates(
         x0, r0, s_.search, candidates_needed_for_triples(s_.tries), kMaxRebarCandidates);
     const double max_shift = r0 + s_.search;
-    const std::vector<double> gap = pair_gaps(near, [&](int j) { return scene_.sphere(j); });
-    const std::size_t n = near.size();
+    const std::size_t n = std::min(near.size(), candidates_needed_for_triples(s_.tries));
+    const std::vector<double> gap = pair_gaps(near, n, [&](int j) { return scene_.sphere(j); });
     // A centre tangent to candidate i is at least its gap from x0 (less the
     // kernel's 1e-9 (r0 + r_i), doubled for the rounding of the gap): with
     // the candidates nearest first, once the newest one of a triple is that
@@ -864,7 +865,7 @@ std::vector<Particle> near_targets(const std::vector<Particle> &particles, const
   // Each target listed in the cells around its own (cells `read` wide): a
   // particle within `read` of it finds it in its one cell. One lookup per
   // particle, as this runs every round over the whole view.
-  CellGrid grid(read);
+  CellGrid grid(read * (1 + 1e-9));    // a hair wider: rounding of floor()
   for (std::size_t t : targets) grid.insert_around(particles[t].x, static_cast<int>(t));
   for (std::size_t i = 0; i < particles.size(); ++i) {
     bool near = false;

@@ -126,13 +126,32 @@ void local_polish(const Local &L, Sphere &s, int steps)
   }
 }
 
+// A root the caller's filter dropped before the polish: a repeat of it (a
+// double root) is dropped too, as a repeat of a kept root would be. Unpolished,
+// the two copies may differ by what the polish would have moved them.
+struct Dropped {
+  bool any = false;
+  Sphere root;
+};
+
 // Keeps a local solution if it is valid, polished as asked; returns the new
 // count. Drops a repeat of the previous solution (a double root).
 int keep_solution(const Sphere in[4], const Local &L, Sphere s, int newton_steps, Sphere out[2],
-                  int count, const std::function<bool(const Sphere &)> &wanted = {})
+                  int count, const std::function<bool(const Sphere &)> &wanted = {},
+                  Dropped *dropped = nullptr)
 {
   if (!(s.r > 0) || !is_finite(s.c)) return count;
-  if (wanted && !wanted(Sphere{L.origin + L.scale * s.c, L.scale * s.r})) return count;
+  if (wanted) {
+    const Sphere raw{L.origin + L.scale * s.c, L.scale * s.r};
+    if (dropped && dropped->any &&
+        norm(dropped->root.c - raw.c) + std::fabs(dropped->root.r - raw.r) <=
+            (kSameSolution + 2 * kAcceptResidual) * raw.r)
+      return count;
+    if (!wanted(raw)) {
+      if (dropped) *dropped = {true, raw};
+      return count;
+    }
+  }
   if (newton_steps > 0) local_polish(L, s, newton_steps);
   if (!(local_residual(L, s) <= kAcceptResidual)) return count;
   // The contract is on the global spheres: far from the origin, or with
@@ -211,6 +230,7 @@ int tangent_spheres_inversion(const Sphere in[4], Sphere out[2], int newton_step
   t = std::max(t, 0.0);
   const Vec3 w_unit = (1.0 / std::sqrt(w2)) * w;
   int count = 0;
+  Dropped dropped;
   for (double sign : {1.0, -1.0}) {
     const Vec3 n = n0 + (sign * std::sqrt(t)) * w_unit;
     const double h =
@@ -219,7 +239,8 @@ int tangent_spheres_inversion(const Sphere in[4], Sphere out[2], int newton_step
     // Back to a sphere through O: centre n / (2h), radius 1 / (2h); then
     // subtract the shrink.
     const double grown = 0.5 / h;
-    count = keep_solution(in, L, Sphere{grown * n, grown - m}, newton_steps, out, count, wanted);
+    count = keep_solution(in, L, Sphere{grown * n, grown - m}, newton_steps, out, count, wanted,
+                          &dropped);
     if (t == 0) break;
   }
   return sorted(out, count);

@@ -34,7 +34,11 @@ double tangency_residual(const Sphere in[4], const Sphere &s);
 // coordinates) and drops it by returning false: a caller's test of what it
 // would reject anyway (too large, overlapping a neighbour) saves the Newton
 // steps of most solutions. Its test must allow for the polish moving the
-// solution (by about the unpolished residual, at most kAcceptResidual r).
+// solution. Measured (one Newton step), the move is below 5e-9 r while r is
+// under 1e3 times the largest of the four radii, 1.4e-7 r up to 1e4 times
+// and 6e-6 r up to 1e5 times; the engine allows kAcceptResidual r, for
+// voids at most about 1e3 times the spheres around them. A repeat of a
+// dropped root (a double root) is dropped too.
 int tangent_spheres_inversion(const Sphere in[4], Sphere out[2], int newton_steps,
                               const std::function<bool(const Sphere &)> &wanted);
 int tangent_spheres_inversion(const Sphere in[4], Sphere out[2], int newton_steps = 0);
