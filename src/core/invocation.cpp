@@ -87,6 +87,20 @@ std::vector<double> share_results(HostHooks &host, const Relocation &rel, bool k
   return host.gather_all(mine);
 }
 
+// Element-wise sum (or max) over the processes of vectors of one length, by
+// one gather: one collective instead of one per element.
+std::vector<double> reduce_all(HostHooks &host, const std::vector<double> &mine, bool take_max)
+{
+  const std::vector<double> every = host.gather_all(mine);
+  if (mine.empty()) return {};
+  std::vector<double> out(mine.size(), take_max ? -INFINITY : 0.0);
+  for (std::size_t k = 0; k < every.size(); ++k) {
+    double &o = out[k % mine.size()];
+    o = take_max ? std::max(o, every[k]) : o + every[k];
+  }
+  return out;
+}
+
 // The owned atoms' part: moves, kept flags, and the atoms to delete (removed
 // by the caller after the last round, so local indices stay valid).
 void apply_to_host(HostHooks &host, const AtomArrays &a,
@@ -342,8 +356,9 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
     std::vector<double> per_round(static_cast<std::size_t>(classes) * lattice.rounds(), 0.0);
     for (std::size_t k : found)
       per_round[size_class(view[k].r) * lattice.rounds() + lattice.colour_of(view[k].x)] += 1;
+    per_round = reduce_all(host, per_round, false);
     double any = 0;
-    for (double &n : per_round) any += n = host.sum(n);
+    for (double n : per_round) any += n;
     if (any > 0) {
       // The ghosts learn which atoms are targets (a forward communication:
       // the atoms and their order stay as they are).
@@ -367,7 +382,7 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
     for (std::size_t k = 0; k < view.size(); ++k)
       if (view[k].owned) owned[view[k].id] = local[k];
     std::vector<int> doomed;
-    double busiest = 0, processes = 1;
+    std::vector<double> work(per_round.size(), 0.0);    // this process's targets per round
     for (std::size_t round = 0; round < per_round.size(); ++round) {
       if (per_round[round] == 0) continue;
       const int cls = static_cast<int>(round) / lattice.rounds();
@@ -380,16 +395,17 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
       };
       const Relocation rel =
           relocate_targets(view, settings, domain, options.keep_unplaced, totals.stats, mine);
-      // Per-process work of the round: the busiest process sets its time.
-      const double here = static_cast<double>(rel.targets.size());
-      busiest += host.max(here);
-      processes = host.sum(1.0);
+      work[round] = static_cast<double>(rel.targets.size());
       const std::vector<double> all = share_results(host, rel, options.keep_unplaced);
       apply_to_host(host, a, owned, all, doomed);
       apply_to_view(all, domain, view);
     }
     host.remove(doomed);
     const double targets = host.sum(static_cast<double>(totals.stats.targets));
+    // Per-process work of each round: the busiest process sets its time.
+    double busiest = 0;
+    for (double most : reduce_all(host, work, true)) busiest += most;
+    const double processes = host.sum(1.0);
     if (totals.rounds > 0) {
       // Balance: the targets over what the busiest process of each round
       // would do if every process were as busy (1 = even).
@@ -404,19 +420,27 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
   }
 
   Stats &s = totals.stats;
-  s.targets = static_cast<std::int64_t>(host.sum(static_cast<double>(s.targets)));
-  s.relocated = static_cast<std::int64_t>(host.sum(static_cast<double>(s.relocated)));
-  s.unplaced = static_cast<std::int64_t>(host.sum(static_cast<double>(s.unplaced)));
-  s.displaced = static_cast<std::int64_t>(host.sum(static_cast<double>(s.displaced)));
-  s.solves = static_cast<std::int64_t>(host.sum(static_cast<double>(s.solves)));
-  s.pushed = static_cast<std::int64_t>(host.sum(static_cast<double>(s.pushed)));
-  s.sweeps = static_cast<std::int64_t>(host.sum(static_cast<double>(s.sweeps)));
-  s.volume_before = host.sum(s.volume_before);
-  s.volume_after = host.sum(s.volume_after);
-  s.volume_removed = host.sum(s.volume_removed);
-  s.max_overlap = host.max(s.max_overlap);
-  s.max_kept_overlap = host.max(s.max_kept_overlap);
-  s.max_push = host.max(s.max_push);
+  auto count = [](std::int64_t n) { return static_cast<double>(n); };
+  const std::vector<double> sums = reduce_all(
+      host,
+      {count(s.targets), count(s.relocated), count(s.unplaced), count(s.displaced), count(s.solves),
+       count(s.pushed), count(s.sweeps), s.volume_before, s.volume_after, s.volume_removed},
+      false);
+  s.targets = static_cast<std::int64_t>(sums[0]);
+  s.relocated = static_cast<std::int64_t>(sums[1]);
+  s.unplaced = static_cast<std::int64_t>(sums[2]);
+  s.displaced = static_cast<std::int64_t>(sums[3]);
+  s.solves = static_cast<std::int64_t>(sums[4]);
+  s.pushed = static_cast<std::int64_t>(sums[5]);
+  s.sweeps = static_cast<std::int64_t>(sums[6]);
+  s.volume_before = sums[7];
+  s.volume_after = sums[8];
+  s.volume_removed = sums[9];
+  const std::vector<double> maxima =
+      reduce_all(host, {s.max_overlap, s.max_kept_overlap, s.max_push}, true);
+  s.max_overlap = maxima[0];
+  s.max_kept_overlap = maxima[1];
+  s.max_push = maxima[2];
   totals.deleted = options.keep_unplaced ? 0 : static_cast<double>(s.unplaced);
   totals.kept = options.keep_unplaced ? static_cast<double>(s.unplaced) : 0;
   totals.seconds = host.max(host.wall_time() - start);
