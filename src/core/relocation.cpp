@@ -166,7 +166,7 @@ public:
     pushable_.push_back(pushable);
     rebar_.push_back(rebar);
     grid_.insert(x, index);
-    if (present) copies_[id].push_back(index);
+    if (present && copies_built_) copies_[id].push_back(index);
     largest_r_ = std::max(largest_r_, r);
     return index;
   }
@@ -175,6 +175,7 @@ public:
   void remove(int j)
   {
     grid_.erase(x_[j], j);
+    build_copies();
     present_[j] = false;
     std::vector<int> &c = copies_[id_[j]];
     c.erase(std::remove(c.begin(), c.end(), j), c.end());
@@ -182,6 +183,7 @@ public:
 
   void set_present(int j, bool pushable)
   {
+    build_copies();
     present_[j] = true;
     pushable_[j] = pushable;
     copies_[id_[j]].push_back(j);
@@ -190,6 +192,7 @@ public:
   // Moves every present copy of sphere j's atom by dx.
   void shift(int j, Vec3 dx)
   {
+    build_copies();
     for (int c : copies_[id_[j]]) place(c, x_[c] + dx);
   }
   void place(int j, Vec3 x)
@@ -308,7 +311,11 @@ public:
   double r(int j) const { return r_[j]; }
   std::int64_t id(int j) const { return id_[j]; }
   bool pushable(int j) const { return pushable_[j]; }
-  const std::vector<int> &copies(std::int64_t id) { return copies_[id]; }
+  const std::vector<int> &copies(std::int64_t id)
+  {
+    build_copies();
+    return copies_[id];
+  }
 
 private:
   CellGrid grid_;
@@ -317,7 +324,18 @@ private:
   std::vector<double> r_;
   std::vector<std::int64_t> id_;
   std::vector<bool> present_, pushable_, rebar_;
-  std::unordered_map<std::int64_t, std::vector<int>> copies_;    // present copies by id
+  // Present copies by id, built on first use: only pushing and kept targets
+  // need them, and building them for every sphere of every round costs more
+  // than the relocation of a small round.
+  std::unordered_map<std::int64_t, std::vector<int>> copies_;
+  bool copies_built_ = false;
+  void build_copies()
+  {
+    if (copies_built_) return;
+    copies_built_ = true;
+    for (std::size_t i = 0; i < x_.size(); ++i)
+      if (present_[i]) copies_[id_[i]].push_back(static_cast<int>(i));
+  }
 };
 
 // Radii a search still wants: [lo, hi].
