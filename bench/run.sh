@@ -489,7 +489,7 @@ if part narrow; then
   bench_scene narrow "$out/scenes/narrow.data" 0.004 0.005 0.005 2
 fi
 part liggghts && liggghts_part 2
-part speedup && speedup beam060 "$out/scenes/beam060.data" 15
+part speedup && speedup beam060 "$out/scenes/beam060.data" 25
 part gap && series_gap beam060 "$out/scenes/beam060.data" 0.0075 3
 part rbar && series_rbar "$beam/matrix_phi060.data.gz" 0.5 0 3
 part relax && for phi in 050 060 064; do

@@ -1,10 +1,12 @@
 #include "invocation.h"
 
+#include "cell_grid.h"
 #include "schedule.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <unordered_map>
 
 namespace reinforce {
@@ -129,8 +131,11 @@ void apply_to_host(HostHooks &host, const AtomArrays &a,
 // and rebuilding the ghosts: a moved atom's copies are replaced by its
 // wrapped centre and the periodic images of it inside this process's view;
 // a deleted one's copies go; a kept one becomes present.
+// `near` (one entry per view particle, or empty) is kept in step with the
+// view: compacted with it, and near_of(p) for each particle added.
 void apply_to_view(const std::vector<double> &all, const Domain &domain,
-                   std::vector<Particle> &view)
+                   std::vector<Particle> &view, std::vector<std::uint64_t> &near,
+                   const std::function<std::uint64_t(const Particle &)> &near_of)
 {
   if (all.empty()) return;
   // The copies of the atoms the round changed (one pass over the view; the
@@ -193,12 +198,52 @@ void apply_to_view(const std::vector<double> &all, const Domain &domain,
       added.push_back(p);
     }
   }
+  const bool track = !near.empty();
   std::size_t kept = 0;
-  for (std::size_t k = 0; k < view.size(); ++k)
-    if (!gone[k]) view[kept++] = view[k];
+  for (std::size_t k = 0; k < view.size(); ++k) {
+    if (gone[k]) continue;
+    if (track) near[kept] = near[k];
+    view[kept++] = view[k];
+  }
   view.resize(kept);
   view.insert(view.end(), added.begin(), added.end());
+  if (!track) return;
+  near.resize(kept);
+  for (const Particle &p : added) near.push_back(near_of(p));
 }
+
+// The rounds whose targets (those this process relocates) lie within
+// `reach` of each view particle, one bit per round: a round's relocation
+// then starts from the particles with its bit, about a tenth of the view,
+// instead of testing the whole view every round. The reach is what
+// relocate_targets would use on the whole view, so the particles it keeps
+// are among them.
+class RoundsNear {
+public:
+  RoundsNear(double reach) : reach_(reach), grid_(reach * (1 + 1e-9)) {}
+  void add_target(Vec3 x, int round)
+  {
+    grid_.insert_around(x, static_cast<int>(targets_.size()));
+    targets_.push_back({x, round});
+  }
+  std::uint64_t of(const Particle &p) const
+  {
+    std::uint64_t bits = 0;
+    grid_.for_each_in_cell(p.x, [&](int t) {
+      if (norm(targets_[t].x - p.x) <= reach_) bits |= std::uint64_t{1} << targets_[t].round;
+    });
+    return bits;
+  }
+
+private:
+  struct Target {
+    Vec3 x;
+    int round;
+  };
+  double reach_;
+  CellGrid grid_;
+  std::vector<Target> targets_;
+};
 
 }    // namespace
 
@@ -383,22 +428,40 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
       if (view[k].owned) owned[view[k].id] = local[k];
     std::vector<int> doomed;
     std::vector<double> work(per_round.size(), 0.0);    // this process's targets per round
+    // Each target is relocated by the process that owns its block's centre.
+    auto round_of = [&](const Particle &p) {
+      if (p.role != Role::Target || !in_box(p.x, domain) ||
+          !in_subdomain(lattice.centre_of(p.x), domain))
+        return -1;
+      return size_class(p.r) * lattice.rounds() + lattice.colour_of(p.x);
+    };
+    double view_largest = settings.rmax;
+    for (const Particle &p : view) view_largest = std::max(view_largest, p.r);
+    RoundsNear rounds_near(footprint(settings, target_rmax, view_largest).read);
+    std::vector<std::uint64_t> near;    // empty: every round reads the whole view
+    if (per_round.size() <= 64) {
+      for (const Particle &p : view)
+        if (round_of(p) >= 0) rounds_near.add_target(p.x, round_of(p));
+      near.reserve(view.size());
+      for (const Particle &p : view) near.push_back(rounds_near.of(p));
+    }
+    auto near_of = [&](const Particle &p) { return rounds_near.of(p); };
+    std::vector<Particle> round_view;
     for (std::size_t round = 0; round < per_round.size(); ++round) {
       if (per_round[round] == 0) continue;
-      const int cls = static_cast<int>(round) / lattice.rounds();
-      const int colour = static_cast<int>(round) % lattice.rounds();
       totals.rounds++;
-      // Each target is relocated by the process that owns its block's centre.
-      auto mine = [&](const Particle &p) {
-        return in_box(p.x, domain) && lattice.colour_of(p.x) == colour && size_class(p.r) == cls &&
-               in_subdomain(lattice.centre_of(p.x), domain);
-      };
-      const Relocation rel =
-          relocate_targets(view, settings, domain, options.keep_unplaced, totals.stats, mine);
+      auto mine = [&](const Particle &p) { return round_of(p) == static_cast<int>(round); };
+      if (!near.empty()) {
+        round_view.clear();
+        for (std::size_t k = 0; k < view.size(); ++k)
+          if (near[k] >> round & 1) round_view.push_back(view[k]);
+      }
+      const Relocation rel = relocate_targets(near.empty() ? view : round_view, settings, domain,
+                                              options.keep_unplaced, totals.stats, mine);
       work[round] = static_cast<double>(rel.targets.size());
       const std::vector<double> all = share_results(host, rel, options.keep_unplaced);
       apply_to_host(host, a, owned, all, doomed);
-      apply_to_view(all, domain, view);
+      apply_to_view(all, domain, view, near, near_of);
     }
     host.remove(doomed);
     const double targets = host.sum(static_cast<double>(totals.stats.targets));
