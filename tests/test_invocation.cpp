@@ -307,6 +307,40 @@ TEST(Invocation, MonodisperseFitSaysSo)
   for (const std::string &line : k.logged) EXPECT_EQ(line.find("single radius"), std::string::npos);
 }
 
+// Many targets without a place: the log says how many, the accepted range
+// and the keywords that change it; a run that loses few says nothing more.
+TEST(Invocation, ManyDeletedSaysWhy)
+{
+  MemoryHost h;
+  fill(h, 8);
+  // A radius no void of this scene reaches: no target finds a place.
+  const Totals t =
+      run_invocation(h, parse_fix_arguments({"0", "bars", "size", "fit", "radius", "0.3", "0.3"}));
+  ASSERT_GT(t.stats.targets, 0);
+  ASSERT_EQ(t.deleted, t.stats.targets);
+  char expected[200];
+  std::snprintf(
+      expected, sizeof expected,
+      "fix reinforce/invert: unplaced: %.0f of %lld targets (%.0f%%) found no void with a "
+      "radius in [0.3, 0.3] and were deleted",
+      t.deleted, static_cast<long long>(t.stats.targets), 100.0 * t.deleted / t.stats.targets);
+  ASSERT_FALSE(h.logged.empty());
+  EXPECT_EQ(h.logged.back().rfind(expected, 0), 0u) << h.logged.back();
+  EXPECT_NE(h.logged.back().find("radius keyword"), std::string::npos);
+  // Kept instead of deleted: no such line.
+  MemoryHost k;
+  fill(k, 8);
+  run_invocation(k, parse_fix_arguments(
+                        {"0", "bars", "size", "fit", "radius", "0.3", "0.3", "unplaced", "keep"}));
+  for (const std::string &line : k.logged) EXPECT_EQ(line.find("found no void"), std::string::npos);
+  // The defaults on the same scene: fewer than one in ten deleted, no line.
+  MemoryHost d;
+  fill(d, 8);
+  const Totals td = run_invocation(d, parse_fix_arguments({"0", "bars"}));
+  ASSERT_LT(td.deleted, 0.1 * td.stats.targets);
+  for (const std::string &line : d.logged) EXPECT_EQ(line.find("found no void"), std::string::npos);
+}
+
 // Rebar of radius 0 is refused with one clear message (a point has no
 // volume to displace).
 TEST(Invocation, ZeroRadiusRebarIsAnError)

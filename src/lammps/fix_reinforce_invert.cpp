@@ -348,7 +348,21 @@ public:
 
   void fail(const std::string &message) override
   {
-    f.error->all(FLERR, message);
+    // A LAMMPS built with exceptions (source builds) leaves the ERROR line
+    // in rank 0's log buffer when error->all throws; the other ranks may
+    // exit first, and mpirun then kills rank 0 before the buffer reaches
+    // the file. Rank 0 flushes before the exception leaves this call, and
+    // the others wait for it at the barrier of LAMMPS's main on their way
+    // out. (The packaged LAMMPS closes its files and exits in error->all.)
+    try {
+      f.error->all(FLERR, message);
+    } catch (...) {
+      if (f.comm->me == 0) {
+        if (f.screen) fflush(f.screen);
+        if (f.logfile) fflush(f.logfile);
+      }
+      throw;
+    }
   }
 
 private:
