@@ -443,6 +443,59 @@ TEST(Engine, PeriodicImagesAreRespected)
   EXPECT_LE(worst_matrix, st.tol);
 }
 
+// The schedule hands a round only the particles within the read reach of
+// its targets (the largest target radius, the largest radius of the view):
+// a relocation must give the same result from them as from the whole view,
+// with and without pushing (docs/design.md, "What a round reads").
+TEST(Engine, ParticlesBeyondTheReadReachChangeNothing)
+{
+  for (const double push : {0.0, kRmax}) {
+    for (const SizeMode size : {SizeMode::Keep, SizeMode::Fit}) {
+      Scene s = make_scene(5);
+      Settings st = default_settings(size);
+      st.push = push;
+      mark(s, st.tol);
+      // Half the targets, as one round of one process would have.
+      auto mine = [](const Particle &p) { return p.role == Role::Target && p.x.x < 0.5; };
+      double target_rmax = 0, largest = st.rmax;
+      for (const Particle &p : s.particles) {
+        largest = std::max(largest, p.r);
+        if (mine(p)) target_rmax = std::max(target_rmax, p.r);
+      }
+      const double reach = footprint(st, target_rmax, largest).read;
+      std::vector<Particle> near;
+      for (const Particle &p : s.particles) {
+        bool within = false;
+        for (const Particle &t : s.particles)
+          within = within || (mine(t) && norm(t.x - p.x) <= reach);
+        if (within) near.push_back(p);
+      }
+      ASSERT_LT(near.size(), s.particles.size());
+      Stats a, b;
+      const Relocation whole = relocate_targets(s.particles, st, s.domain, false, a, mine);
+      const Relocation part = relocate_targets(near, st, s.domain, false, b, mine);
+      ASSERT_GE(whole.targets.size(), 4u);
+      ASSERT_EQ(whole.targets.size(), part.targets.size());
+      for (std::size_t i = 0; i < whole.targets.size(); ++i) {
+        EXPECT_EQ(whole.targets[i].id, part.targets[i].id);
+        EXPECT_EQ(whole.targets[i].outcome, part.targets[i].outcome);
+        EXPECT_EQ(whole.targets[i].x.x, part.targets[i].x.x);
+        EXPECT_EQ(whole.targets[i].x.y, part.targets[i].x.y);
+        EXPECT_EQ(whole.targets[i].x.z, part.targets[i].x.z);
+        EXPECT_EQ(whole.targets[i].r, part.targets[i].r);
+      }
+      ASSERT_EQ(whole.pushes.size(), part.pushes.size());
+      for (std::size_t i = 0; i < whole.pushes.size(); ++i) {
+        EXPECT_EQ(whole.pushes[i].id, part.pushes[i].id);
+        EXPECT_EQ(whole.pushes[i].dx.x, part.pushes[i].dx.x);
+        EXPECT_EQ(whole.pushes[i].dx.y, part.pushes[i].dx.y);
+        EXPECT_EQ(whole.pushes[i].dx.z, part.pushes[i].dx.z);
+      }
+      EXPECT_EQ(a.solves, b.solves);
+    }
+  }
+}
+
 TEST(Engine, FootprintCoversWhatARelocationTouches)
 {
   Settings st = default_settings(SizeMode::Fit);
