@@ -9,6 +9,9 @@ here=$(cd "$(dirname "$0")" && pwd)
 exe=${1:-$here/../../build/src/liggghts/liggghts_reinforce}
 exe=$(cd "$(dirname "$exe")" && pwd)/$(basename "$exe")
 [ -x "$exe" ] || { echo "run.sh: no liggghts_reinforce at $exe (build it first)"; exit 1; }
+# The shell ratio of each scene (tests/tools/scene_quality; built beside it).
+quality=$(dirname "$exe")/../../tests/scene_quality
+[ -x "$quality" ] || { echo "run.sh: no scene_quality at $quality (build it first)"; exit 1; }
 cd "$here"
 mkdir -p out
 rm -f out/row_*.txt
@@ -24,16 +27,19 @@ run default
 run wide -var extra "radius 0.0015 0.005"
 run multisphere -var bars multisphere
 {
-  echo "| run | bars | matrix spheres after | rebar spheres | solid fraction after | targets | relocated | deleted | largest overlap / rmin | relocation time (s) |"
-  echo "|---|---|---|---|---|---|---|---|---|---|"
+  echo "| run | bars | matrix spheres after | rebar spheres | solid fraction after | targets | relocated | deleted | largest overlap / rmin | relocation time (s) | shell ratio |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|"
   for tag in default wide multisphere; do
     case $tag in
       default) bars="plain spheres" ;;
       wide) bars="plain spheres, \`radius 0.0015 0.005\`" ;;
       multisphere) bars="\`fix multisphere\` clumps" ;;
     esac
-    awk -v bars="$bars" '$1 == "ROW" {
-      printf "| %s | %s | %d | %d | %.3f | %d | %d | %d | %.1e | %.3f |\n", $2, bars, $3, $4, $5, $6, $7, $8, $9, $10
+    # Matrix radii 3-5 mm: the shell is the first 2 rmax from the bars.
+    shell=$("$quality" --after "out/liggghts_$tag.data" --rmin 0.003 --rmax 0.005 --quiet-profile |
+      tr ' ' '\n' | awk -F= '$1 == "shell_ratio" {r = $2} $1 == "shell_ratio_se" {se = $2} END {print r " ± " se}')
+    awk -v bars="$bars" -v shell="$shell" '$1 == "ROW" {
+      printf "| %s | %s | %d | %d | %.3f | %d | %d | %d | %.1e | %.3f | %s |\n", $2, bars, $3, $4, $5, $6, $7, $8, $9, $10, shell
     }' "out/row_$tag.txt"
   done
 } > out/table.md
