@@ -118,6 +118,27 @@ double worst_overlap_of_moved(const std::vector<Particle> &after, const Scene &b
   return worst;
 }
 
+// The same targets, outcomes, places, radii and pushes, bit for bit.
+void expect_same_relocation(const Relocation &a, const Relocation &b)
+{
+  ASSERT_EQ(a.targets.size(), b.targets.size());
+  for (std::size_t i = 0; i < a.targets.size(); ++i) {
+    EXPECT_EQ(a.targets[i].id, b.targets[i].id);
+    EXPECT_EQ(a.targets[i].outcome, b.targets[i].outcome);
+    EXPECT_EQ(a.targets[i].x.x, b.targets[i].x.x);
+    EXPECT_EQ(a.targets[i].x.y, b.targets[i].x.y);
+    EXPECT_EQ(a.targets[i].x.z, b.targets[i].x.z);
+    EXPECT_EQ(a.targets[i].r, b.targets[i].r);
+  }
+  ASSERT_EQ(a.pushes.size(), b.pushes.size());
+  for (std::size_t i = 0; i < a.pushes.size(); ++i) {
+    EXPECT_EQ(a.pushes[i].id, b.pushes[i].id);
+    EXPECT_EQ(a.pushes[i].dx.x, b.pushes[i].dx.x);
+    EXPECT_EQ(a.pushes[i].dx.y, b.pushes[i].dx.y);
+    EXPECT_EQ(a.pushes[i].dx.z, b.pushes[i].dx.z);
+  }
+}
+
 }    // namespace
 
 TEST(Engine, FitModeRelocatesBarOverlapsWithoutOverlap)
@@ -330,23 +351,8 @@ TEST(Engine, SameInputSameOutputInAnyOrder)
   Stats a, b;
   const Relocation pa = relocate_targets(s.particles, st, s.domain, false, a);
   const Relocation pb = relocate_targets(shuffled.particles, st, shuffled.domain, false, b);
-  ASSERT_EQ(pa.targets.size(), pb.targets.size());
   ASSERT_GT(pa.targets.size(), 0u);
-  for (std::size_t i = 0; i < pa.targets.size(); ++i) {
-    EXPECT_EQ(pa.targets[i].id, pb.targets[i].id);
-    EXPECT_EQ(pa.targets[i].outcome, pb.targets[i].outcome);
-    EXPECT_EQ(pa.targets[i].x.x, pb.targets[i].x.x);
-    EXPECT_EQ(pa.targets[i].x.y, pb.targets[i].x.y);
-    EXPECT_EQ(pa.targets[i].x.z, pb.targets[i].x.z);
-    EXPECT_EQ(pa.targets[i].r, pb.targets[i].r);
-  }
-  ASSERT_EQ(pa.pushes.size(), pb.pushes.size());
-  for (std::size_t i = 0; i < pa.pushes.size(); ++i) {
-    EXPECT_EQ(pa.pushes[i].id, pb.pushes[i].id);
-    EXPECT_EQ(pa.pushes[i].dx.x, pb.pushes[i].dx.x);
-    EXPECT_EQ(pa.pushes[i].dx.y, pb.pushes[i].dx.y);
-    EXPECT_EQ(pa.pushes[i].dx.z, pb.pushes[i].dx.z);
-  }
+  expect_same_relocation(pa, pb);
   EXPECT_EQ(a.solves, b.solves);
 }
 
@@ -475,22 +481,7 @@ TEST(Engine, ParticlesBeyondTheReadReachChangeNothing)
       const Relocation whole = relocate_targets(s.particles, st, s.domain, false, a, mine);
       const Relocation part = relocate_targets(near, st, s.domain, false, b, mine);
       ASSERT_GE(whole.targets.size(), 4u);
-      ASSERT_EQ(whole.targets.size(), part.targets.size());
-      for (std::size_t i = 0; i < whole.targets.size(); ++i) {
-        EXPECT_EQ(whole.targets[i].id, part.targets[i].id);
-        EXPECT_EQ(whole.targets[i].outcome, part.targets[i].outcome);
-        EXPECT_EQ(whole.targets[i].x.x, part.targets[i].x.x);
-        EXPECT_EQ(whole.targets[i].x.y, part.targets[i].x.y);
-        EXPECT_EQ(whole.targets[i].x.z, part.targets[i].x.z);
-        EXPECT_EQ(whole.targets[i].r, part.targets[i].r);
-      }
-      ASSERT_EQ(whole.pushes.size(), part.pushes.size());
-      for (std::size_t i = 0; i < whole.pushes.size(); ++i) {
-        EXPECT_EQ(whole.pushes[i].id, part.pushes[i].id);
-        EXPECT_EQ(whole.pushes[i].dx.x, part.pushes[i].dx.x);
-        EXPECT_EQ(whole.pushes[i].dx.y, part.pushes[i].dx.y);
-        EXPECT_EQ(whole.pushes[i].dx.z, part.pushes[i].dx.z);
-      }
+      expect_same_relocation(whole, part);
       EXPECT_EQ(a.solves, b.solves);
     }
   }
