@@ -348,21 +348,7 @@ public:
 
   void fail(const std::string &message) override
   {
-    // A LAMMPS built with exceptions (source builds) leaves the ERROR line
-    // in rank 0's log buffer when error->all throws; the other ranks may
-    // exit first, and mpirun then kills rank 0 before the buffer reaches
-    // the file. Rank 0 flushes before the exception leaves this call, and
-    // the others wait for it at the barrier of LAMMPS's main on their way
-    // out. (The packaged LAMMPS closes its files and exits in error->all.)
-    try {
-      f.error->all(FLERR, message);
-    } catch (...) {
-      if (f.comm->me == 0) {
-        if (f.screen) fflush(f.screen);
-        if (f.logfile) fflush(f.logfile);
-      }
-      throw;
-    }
+    f.stop(FLERR, message);
   }
 
 private:
@@ -385,7 +371,7 @@ FixReinforceInvert::FixReinforceInvert(LAMMPS *lmp, int narg, char **arg)
   try {
     options = reinforce::parse_fix_arguments(args);
   } catch (const reinforce::OptionError &e) {
-    error->all(FLERR, std::string(e.what()));
+    stop(FLERR, std::string(e.what()));
   }
 
   check_styles();
@@ -435,48 +421,62 @@ void FixReinforceInvert::check_styles()
 {
   const std::string me = "Fix reinforce/invert ";
   if (!atom->radius_flag || !atom->rmass_flag)
-    error->all(FLERR, me + "requires atom attributes radius and rmass");
-  if (!atom->tag_enable) error->all(FLERR, me + "requires atom IDs");
-  if (atom->molecular != Atom::ATOMIC)
-    error->all(FLERR, me + "does not support molecular atom styles");
+    stop(FLERR, me + "requires atom attributes radius and rmass");
+  if (!atom->tag_enable) stop(FLERR, me + "requires atom IDs");
+  if (atom->molecular != Atom::ATOMIC) stop(FLERR, me + "does not support molecular atom styles");
   if (atom->ellipsoid_flag || atom->line_flag || atom->tri_flag || atom->body_flag)
-    error->all(FLERR,
-               me + "does not support atom styles with bonus data (ellipsoid, line, tri, body)");
-  if (domain->dimension != 3) error->all(FLERR, me + "requires a 3d simulation");
-  if (domain->triclinic) error->all(FLERR, me + "does not support triclinic boxes");
-  if (comm->style != 0) error->all(FLERR, me + "requires comm_style brick");
-  if (comm->mode != Comm::SINGLE) error->all(FLERR, me + "requires comm_modify mode single");
+    stop(FLERR, me + "does not support atom styles with bonus data (ellipsoid, line, tri, body)");
+  if (domain->dimension != 3) stop(FLERR, me + "requires a 3d simulation");
+  if (domain->triclinic) stop(FLERR, me + "does not support triclinic boxes");
+  if (comm->style != 0) stop(FLERR, me + "requires comm_style brick");
+  if (comm->mode != Comm::SINGLE) stop(FLERR, me + "requires comm_modify mode single");
   // Ghosts of one group only would hide neighbours from the relocation.
   if (CommAccess::border_group_of(comm) != 0)
-    error->all(FLERR, me + "does not support comm_modify group");
+    stop(FLERR, me + "does not support comm_modify group");
 }
 
 void FixReinforceInvert::find_groups_and_region()
 {
   rebar_group = group->find(options.rebar_group);
   if (rebar_group < 0)
-    error->all(FLERR,
-               "Fix reinforce/invert rebar group '" + options.rebar_group + "' does not exist");
+    stop(FLERR, "Fix reinforce/invert rebar group '" + options.rebar_group + "' does not exist");
   if (rebar_group == igroup)
-    error->all(FLERR,
-               std::string("Fix reinforce/invert rebar group must differ from the fix group"));
+    stop(FLERR, std::string("Fix reinforce/invert rebar group must differ from the fix group"));
   // A dynamic group is evaluated by its fix during the run's setup, after
   // the relocation: refused rather than read half-evaluated.
   if (group->dynamic[rebar_group])
-    error->all(FLERR, "Fix reinforce/invert rebar group '" + options.rebar_group +
-                          "' is dynamic: make it static first (group " + options.rebar_group +
-                          " static)");
+    stop(FLERR, "Fix reinforce/invert rebar group '" + options.rebar_group +
+                    "' is dynamic: make it static first (group " + options.rebar_group +
+                    " static)");
   rebar_bit = group->bitmask[rebar_group];
 
   region = nullptr;
   if (!options.region.empty()) {
     region = find_region(domain, options.region);
-    if (!region)
-      error->all(FLERR, "Fix reinforce/invert region '" + options.region + "' does not exist");
+    if (!region) stop(FLERR, "Fix reinforce/invert region '" + options.region + "' does not exist");
   }
 }
 
 // The fix moves and deletes single spheres: a matrix atom (fix group, not
+// A LAMMPS built with exceptions (source builds) leaves the ERROR line in
+// rank 0's log buffer when error->all throws; the other ranks may exit
+// first, and mpirun then kills rank 0 before the buffer reaches the file.
+// Rank 0 flushes before the exception leaves, and the others wait for it at
+// the barrier of LAMMPS's main on their way out. (The packaged LAMMPS closes
+// its files and exits inside error->all.)
+void FixReinforceInvert::stop(const char *file, int line, const std::string &message)
+{
+  try {
+    error->all(file, line, message);
+  } catch (...) {
+    if (comm->me == 0) {
+      if (screen) fflush(screen);
+      if (logfile) fflush(logfile);
+    }
+    throw;
+  }
+}
+
 // rebar) in the group of a rigid-body fix (rigid, rigid/small, ...) would
 // be torn out of its body. Bars may be rigid bodies. Collective.
 void FixReinforceInvert::check_rigid_bodies()
@@ -490,10 +490,9 @@ void FixReinforceInvert::check_rigid_bodies()
              (atom->mask[i] & other->groupbit);
     MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
     if (any)
-      error->all(FLERR, std::string("Fix reinforce/invert cannot move atoms of rigid bodies: "
-                                    "matrix atoms belong to fix ") +
-                            other->id + " (" + other->style +
-                            "); leave the bodies out of the fix group");
+      stop(FLERR, std::string("Fix reinforce/invert cannot move atoms of rigid bodies: "
+                              "matrix atoms belong to fix ") +
+                      other->id + " (" + other->style + "); leave the bodies out of the fix group");
   }
 }
 

@@ -92,6 +92,9 @@ private:
   void request_neighbour_list();
 #endif
 
+  // error->all, with rank 0's screen and log flushed before its exception
+  // leaves (a source-built LAMMPS throws there; see the .cpp).
+  void stop(const char *file, int line, const std::string &message);
   bool done() const;    // N = 0, relocated once
   void check_styles();
   void find_groups_and_region();
