@@ -4,9 +4,9 @@
 #include "schedule.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <unordered_map>
 
 namespace reinforce {
@@ -68,7 +68,9 @@ std::string format(const char *fmt, double a, double b = 0)
 // target's in-box copy), 1 deleted, 2 kept, 3 pushed (x: the displacement).
 // The owner of an atom applies them to the host's atom; every process
 // applies them to its view, so that the next round needs no migration and
-// no new ghosts from the host.
+// no new ghosts from the host. The records of one round touch each atom
+// once at most (the blocks of a round are independent), so a process may
+// apply its own records and the others' in either order.
 constexpr int kRecord = 6;
 // The share of targets deleted for want of a void above which the log says
 // why (docs/fix_reinforce_invert.rst, "Output").
@@ -80,16 +82,15 @@ constexpr double kManyUnplaced = 0.1;
 // scenes' shell ratios of 4 within their standard error and let the small
 // beam run 1.73 times faster on 2 processes (4: 1.68; docs/design.md).
 constexpr int kSizeClasses = 3;
-std::vector<double> share_results(HostHooks &host, const Relocation &rel, bool keep_unplaced)
+// This process's records of one relocation, appended to `records`.
+void append_records(const Relocation &rel, bool keep_unplaced, std::vector<double> &records)
 {
-  std::vector<double> mine;
   for (const TargetResult &t : rel.targets) {
     const double what = t.outcome == Outcome::Placed ? 0 : (keep_unplaced ? 2 : 1);
-    mine.insert(mine.end(), {static_cast<double>(t.id), what, t.x.x, t.x.y, t.x.z, t.r});
+    records.insert(records.end(), {static_cast<double>(t.id), what, t.x.x, t.x.y, t.x.z, t.r});
   }
   for (const Push &p : rel.pushes)
-    mine.insert(mine.end(), {static_cast<double>(p.id), 3, p.dx.x, p.dx.y, p.dx.z, 0});
-  return host.gather_all(mine);
+    records.insert(records.end(), {static_cast<double>(p.id), 3, p.dx.x, p.dx.y, p.dx.z, 0});
 }
 
 // Element-wise sum (or max) over the processes of vectors of one length, by
@@ -130,91 +131,6 @@ void apply_to_host(HostHooks &host, const AtomArrays &a,
   }
 }
 
-// The view's part, as the host would give it after migrating the atoms
-// and rebuilding the ghosts: a moved atom's copies are replaced by its
-// wrapped centre and the periodic images of it inside this process's view;
-// a deleted one's copies go; a kept one becomes present.
-// `near` (one entry per view particle, or empty) is kept in step with the
-// view: compacted with it, and near_of(p) for each particle added.
-void apply_to_view(const std::vector<double> &all, const Domain &domain,
-                   std::vector<Particle> &view, std::vector<std::uint64_t> &near,
-                   const std::function<std::uint64_t(const Particle &)> &near_of)
-{
-  if (all.empty()) return;
-  // The copies of the atoms the round changed (one pass over the view; the
-  // map holds only those atoms). A bit per hashed ID, at least 16 per
-  // record, turns most of the view away before the map lookup (this runs
-  // every round over the whole view).
-  std::unordered_map<std::int64_t, std::vector<std::size_t>> copies;
-  std::size_t bits = 64;
-  while (bits < 16 * all.size() / kRecord) bits *= 2;
-  std::vector<bool> maybe(bits, false);
-  auto bit_of = [&](std::int64_t id) {
-    return static_cast<std::size_t>((static_cast<std::uint64_t>(id) * 0x9E3779B97F4A7C15ull) >>
-                                    32) &
-           (bits - 1);
-  };
-  for (std::size_t k = 0; k + kRecord <= all.size(); k += kRecord) {
-    copies[static_cast<std::int64_t>(all[k])];
-    maybe[bit_of(static_cast<std::int64_t>(all[k]))] = true;
-  }
-  for (std::size_t k = 0; k < view.size(); ++k) {
-    if (!maybe[bit_of(view[k].id)]) continue;
-    auto it = copies.find(view[k].id);
-    if (it != copies.end()) it->second.push_back(k);
-  }
-  std::vector<bool> gone(view.size(), false);
-  std::vector<Particle> added;
-  for (std::size_t k = 0; k + kRecord <= all.size(); k += kRecord) {
-    const std::int64_t id = static_cast<std::int64_t>(all[k]);
-    const int what = static_cast<int>(all[k + 1]);
-    const Vec3 v{all[k + 2], all[k + 3], all[k + 4]};
-    auto it = copies.find(id);
-    const std::vector<std::size_t> none;
-    const std::vector<std::size_t> &mine = it == copies.end() ? none : it->second;
-    if (what == 2) {
-      for (std::size_t c : mine) view[c].role = Role::Matrix;
-      continue;
-    }
-    if (mine.empty() && what != 0) continue;    // neither seen nor to be seen here
-    Particle moved;
-    if (!mine.empty()) moved = view[mine.front()];
-    // The in-box copy, if this process has it, is where a push starts.
-    for (std::size_t c : mine)
-      if (in_box(view[c].x, domain)) moved = view[c];
-    for (std::size_t c : mine) gone[c] = true;
-    if (what == 1) continue;
-    if (what == 0) {
-      moved.id = id;
-      moved.x = v;
-      moved.r = all[k + 5];
-      moved.role = Role::Matrix;
-      moved.pushable = true;    // a target is a matrix atom of the fix group
-      if (mine.empty()) moved.owned = false;
-    } else {
-      moved.x = moved.x + v;
-    }
-    for (const Vec3 &image : images_in_view(wrapped_into_box(moved.x, domain), domain, true)) {
-      Particle p = moved;
-      p.x = image;
-      p.owned = false;
-      added.push_back(p);
-    }
-  }
-  const bool track = !near.empty();
-  std::size_t kept = 0;
-  for (std::size_t k = 0; k < view.size(); ++k) {
-    if (gone[k]) continue;
-    if (track) near[kept] = near[k];
-    view[kept++] = view[k];
-  }
-  view.resize(kept);
-  view.insert(view.end(), added.begin(), added.end());
-  if (!track) return;
-  near.resize(kept);
-  for (const Particle &p : added) near.push_back(near_of(p));
-}
-
 // The rounds whose targets (those this process relocates) lie within
 // `reach` of each view particle, one bit per round: a round's relocation
 // then starts from the particles with its bit, about a tenth of the view,
@@ -247,6 +163,151 @@ private:
   CellGrid grid_;
   std::vector<Target> targets_;
 };
+
+// The view as the rounds change it, as the host would give it after
+// migrating the atoms and rebuilding the ghosts: a moved atom's copies are
+// replaced by its wrapped centre and the periodic images of it inside this
+// process's view; a deleted one's copies go; a kept one becomes present.
+// Particles never move in the vector (an atom's old copies are marked gone,
+// its new ones appended), so the index by ID, sorted once, stays valid and
+// a round's records cost what they hold, not a pass over the view.
+class LiveView {
+public:
+  LiveView(std::vector<Particle> view, const RoundsNear &rounds_near)
+      : view_(std::move(view)), gone_(view_.size(), false), rounds_near_(rounds_near)
+  {
+    near_.reserve(view_.size());
+    by_id_.reserve(view_.size());
+    for (std::size_t k = 0; k < view_.size(); ++k) {
+      near_.push_back(rounds_near_.of(view_[k]));
+      by_id_.emplace_back(view_[k].id, k);
+    }
+    std::sort(by_id_.begin(), by_id_.end());
+  }
+
+  // The particles round `round` reads (those near its targets), in view order.
+  void read_by(int round, std::vector<Particle> &out) const
+  {
+    out.clear();
+    for (std::size_t k = 0; k < view_.size(); ++k)
+      if (near_[k] >> round & 1) out.push_back(view_[k]);
+  }
+
+  void apply(const std::vector<double> &records, const Domain &domain)
+  {
+    std::vector<std::size_t> copies;
+    for (std::size_t k = 0; k + kRecord <= records.size(); k += kRecord) {
+      const std::int64_t id = static_cast<std::int64_t>(records[k]);
+      const int what = static_cast<int>(records[k + 1]);
+      const Vec3 v{records[k + 2], records[k + 3], records[k + 4]};
+      copies_of(id, copies);
+      if (what == 2) {
+        for (std::size_t c : copies) view_[c].role = Role::Matrix;
+        continue;
+      }
+      if (copies.empty() && what != 0) continue;    // neither seen nor to be seen here
+      Particle moved;
+      if (!copies.empty()) moved = view_[copies.front()];
+      // The in-box copy, if this process has it, is where a push starts.
+      for (std::size_t c : copies)
+        if (in_box(view_[c].x, domain)) moved = view_[c];
+      for (std::size_t c : copies) {
+        gone_[c] = true;
+        near_[c] = 0;
+      }
+      if (what == 1) continue;
+      if (what == 0) {
+        moved.id = id;
+        moved.x = v;
+        moved.r = records[k + 5];
+        moved.role = Role::Matrix;
+        moved.pushable = true;    // a target is a matrix atom of the fix group
+        if (copies.empty()) moved.owned = false;
+      } else {
+        moved.x = moved.x + v;
+      }
+      for (const Vec3 &image : images_in_view(wrapped_into_box(moved.x, domain), domain, true)) {
+        Particle p = moved;
+        p.x = image;
+        p.owned = false;
+        added_[id].push_back(view_.size());
+        view_.push_back(p);
+        near_.push_back(rounds_near_.of(p));
+        gone_.push_back(false);
+      }
+    }
+  }
+
+private:
+  // The present copies of atom `id`.
+  void copies_of(std::int64_t id, std::vector<std::size_t> &out) const
+  {
+    out.clear();
+    const auto first =
+        std::lower_bound(by_id_.begin(), by_id_.end(), std::pair<std::int64_t, std::size_t>{id, 0});
+    for (auto it = first; it != by_id_.end() && it->first == id; ++it)
+      if (!gone_[it->second]) out.push_back(it->second);
+    const auto more = added_.find(id);
+    if (more == added_.end()) return;
+    for (std::size_t c : more->second)
+      if (!gone_[c]) out.push_back(c);
+  }
+
+  std::vector<Particle> view_;
+  std::vector<std::uint64_t> near_;    // rounds near each particle (none once gone)
+  std::vector<bool> gone_;
+  std::vector<std::pair<std::int64_t, std::size_t>> by_id_;             // the first view, by id
+  std::unordered_map<std::int64_t, std::vector<std::size_t>> added_;    // later copies
+  const RoundsNear &rounds_near_;
+};
+
+// A block of the lattice in one round: {round, i, j, k}.
+using BlockKey = std::array<int, 4>;
+
+BlockKey block_key(const BlockLattice &lattice, int round, Vec3 x)
+{
+  int b[3];
+  lattice.block_of(x, b);
+  return {round, b[0], b[1], b[2]};
+}
+
+// The blocks (with their rounds) where the other processes have targets,
+// sorted: each block's targets are relocated by one process only.
+std::vector<BlockKey> others_blocks(HostHooks &host, const std::vector<BlockKey> &mine)
+{
+  std::vector<double> flat;
+  for (const BlockKey &k : mine) flat.insert(flat.end(), k.begin(), k.end());
+  const std::vector<double> every = host.gather_all(flat);
+  std::vector<BlockKey> others;
+  for (std::size_t n = 0; n + 4 <= every.size(); n += 4) {
+    const BlockKey k{static_cast<int>(every[n]), static_cast<int>(every[n + 1]),
+                     static_cast<int>(every[n + 2]), static_cast<int>(every[n + 3])};
+    if (!std::binary_search(mine.begin(), mine.end(), k)) others.push_back(k);
+  }
+  std::sort(others.begin(), others.end());
+  return others;
+}
+
+// True when block `key` shares a face, an edge or a corner with one of
+// `blocks` in round `round` (across periodic boundaries too).
+bool touches(const BlockLattice &lattice, const Domain &box, const BlockKey &key, int round,
+             const std::vector<BlockKey> &blocks)
+{
+  for (int di = -1; di <= 1; ++di)
+    for (int dj = -1; dj <= 1; ++dj)
+      for (int dk = -1; dk <= 1; ++dk) {
+        BlockKey n{round, key[1] + di, key[2] + dj, key[3] + dk};
+        bool inside = true;
+        for (int d = 0; d < 3; ++d) {
+          const int count = lattice.count[d];
+          if (n[d + 1] >= 0 && n[d + 1] < count) continue;
+          if (!box.periodic[d]) inside = false;
+          n[d + 1] = (n[d + 1] + count) % count;
+        }
+        if (inside && std::binary_search(blocks.begin(), blocks.end(), n)) return true;
+      }
+  return false;
+}
 
 }    // namespace
 
@@ -442,33 +503,74 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
     };
     double view_largest = settings.rmax;
     for (const Particle &p : view) view_largest = std::max(view_largest, p.r);
+    // Rounds are a bit each in RoundsNear: at most 3 classes x 8 colours.
+    static_assert(kSizeClasses * 8 <= 64, "a round per bit of RoundsNear");
     RoundsNear rounds_near(footprint(settings, target_rmax, view_largest).read);
-    std::vector<std::uint64_t> near;    // empty: every round reads the whole view
-    if (per_round.size() <= 64) {
-      for (const Particle &p : view) {
-        const int round = round_of(p);
-        if (round >= 0) rounds_near.add_target(p.x, round);
-      }
-      near.reserve(view.size());
-      for (const Particle &p : view) near.push_back(rounds_near.of(p));
+    for (const Particle &p : view) {
+      const int round = round_of(p);
+      if (round >= 0) rounds_near.add_target(p.x, round);
     }
-    auto near_of = [&](const Particle &p) { return rounds_near.of(p); };
+    // The blocks that hold this process's targets, per round, and the other
+    // processes' ones. In a round, this process first relocates its blocks
+    // that do not touch (share a face, edge or corner with) another
+    // process's block of the round before, then collects that round's
+    // results from the others, then relocates the rest: a block reads
+    // nothing another process changed in a block not touching it (blocks
+    // are at least write + read reach wide), so the work waits only where
+    // it must, and the results are those of relocating the rounds one after
+    // the other (docs/design.md, "Overlapping the exchange").
+    std::vector<BlockKey> my_blocks;
+    for (const Particle &p : view) {
+      const int round = round_of(p);
+      if (round >= 0) my_blocks.push_back(block_key(lattice, round, p.x));
+    }
+    std::sort(my_blocks.begin(), my_blocks.end());
+    my_blocks.erase(std::unique(my_blocks.begin(), my_blocks.end()), my_blocks.end());
+    const std::vector<BlockKey> other_blocks = others_blocks(host, my_blocks);
+    LiveView live(std::move(view), rounds_near);
     std::vector<Particle> round_view;
+    auto relocate_part = [&](int round, const std::vector<BlockKey> &waiting, bool waits,
+                             std::vector<double> &records) {
+      auto picked = [&](const Particle &p) {
+        if (round_of(p) != round) return false;
+        const BlockKey key = block_key(lattice, round, p.x);
+        return std::binary_search(waiting.begin(), waiting.end(), key) == waits;
+      };
+      live.read_by(round, round_view);
+      const Relocation rel = relocate_targets(round_view, settings, domain, options.keep_unplaced,
+                                              totals.stats, picked);
+      work[round] += static_cast<double>(rel.targets.size());
+      append_records(rel, options.keep_unplaced, records);
+    };
+    auto collect = [&]() {
+      const std::vector<double> others = host.collect_results();
+      apply_to_host(host, a, owned, others, doomed);
+      live.apply(others, domain);
+    };
+    int previous = -1;    // the round whose others' results are still to collect
     for (std::size_t round = 0; round < per_round.size(); ++round) {
       if (per_round[round] == 0) continue;
       totals.rounds++;
-      auto mine = [&](const Particle &p) { return round_of(p) == static_cast<int>(round); };
-      if (!near.empty()) {
-        round_view.clear();
-        for (std::size_t k = 0; k < view.size(); ++k)
-          if (near[k] >> round & 1) round_view.push_back(view[k]);
-      }
-      const Relocation rel = relocate_targets(near.empty() ? view : round_view, settings, domain,
-                                              options.keep_unplaced, totals.stats, mine);
-      work[round] = static_cast<double>(rel.targets.size());
-      const std::vector<double> all = share_results(host, rel, options.keep_unplaced);
-      apply_to_host(host, a, owned, all, doomed);
-      apply_to_view(all, domain, view, near, near_of);
+      const int r = static_cast<int>(round);
+      const auto first = std::lower_bound(my_blocks.begin(), my_blocks.end(), BlockKey{r, 0, 0, 0});
+      const auto last = std::lower_bound(first, my_blocks.end(), BlockKey{r + 1, 0, 0, 0});
+      std::vector<BlockKey> waiting;
+      for (auto it = first; it != last; ++it)
+        if (previous >= 0 && touches(lattice, box, *it, previous, other_blocks))
+          waiting.push_back(*it);
+      std::vector<double> records;
+      if (static_cast<std::size_t>(last - first) > waiting.size())
+        relocate_part(r, waiting, false, records);
+      if (previous >= 0) collect();
+      if (!waiting.empty()) relocate_part(r, waiting, true, records);
+      apply_to_host(host, a, owned, records, doomed);
+      live.apply(records, domain);
+      host.post_results(records);
+      previous = r;
+    }
+    if (previous >= 0) {
+      collect();
+      host.finish_results();
     }
     host.remove(doomed);
     const double targets = host.sum(static_cast<double>(totals.stats.targets));

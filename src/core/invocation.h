@@ -53,6 +53,16 @@ public:
   virtual double max(double v) = 0;
   // Every process's values, concatenated in rank order (collective).
   virtual std::vector<double> gather_all(const std::vector<double> &mine) = 0;
+  // A round's results, exchanged without a barrier: post_results sends this
+  // process's values to every other process and returns at once;
+  // collect_results returns the other processes' values (not this one's) of
+  // the oldest round posted and not yet collected, in rank order, waiting
+  // only for those not yet there; finish_results, after the last collect,
+  // waits until every posted value has been sent. Every process posts and
+  // collects the same rounds in the same order.
+  virtual void post_results(const std::vector<double> &mine) = 0;
+  virtual std::vector<double> collect_results() = 0;
+  virtual void finish_results() = 0;
 
   // Optional: the host's own neighbour list, for the overlap check that
   // finds the targets (the only query the engine sends to it; the candidate

@@ -1,9 +1,10 @@
-// One MPI collective both host adapters need (the core itself never calls
-// MPI: run_invocation reaches it through HostHooks::gather_all).
+// The MPI communication both host adapters need (the core itself never
+// calls MPI: run_invocation reaches it through HostHooks).
 #pragma once
 
 #include <mpi.h>
 
+#include <utility>
 #include <vector>
 
 namespace reinforce {
@@ -22,5 +23,92 @@ inline std::vector<double> mpi_gather_all(const std::vector<double> &mine, MPI_C
                  MPI_DOUBLE, comm);
   return all;
 }
+
+// The rounds' results without a barrier (HostHooks::post_results and
+// collect_results): post() sends this rank's values to every other rank
+// and returns; collect() receives the other ranks' values of the oldest
+// round posted and not yet collected, in rank order. A rank waits only for
+// the ranks whose values are not there yet, and does its own work in the
+// meantime. Messages between two ranks arrive in the order sent (MPI's
+// non-overtaking rule), so one tag serves every round.
+class MpiExchange {
+public:
+  explicit MpiExchange(MPI_Comm comm) : comm_(comm)
+  {
+    MPI_Comm_rank(comm, &rank_);
+    MPI_Comm_size(comm, &size_);
+  }
+  MpiExchange(const MpiExchange &) = delete;
+  MpiExchange &operator=(const MpiExchange &) = delete;
+  // Sends still under way (an error unwound through the rounds) may still
+  // read their buffers: those are left allocated rather than freed under
+  // MPI, and the requests released.
+  ~MpiExchange()
+  {
+    for (Batch &b : sent_) {
+      for (MPI_Request &r : b.requests)
+        if (r != MPI_REQUEST_NULL) MPI_Request_free(&r);
+      new std::vector<double>(std::move(b.values));    // deliberately kept
+    }
+  }
+
+  void post(const std::vector<double> &mine)
+  {
+    release_sent(false);
+    sent_.push_back({mine, {}});
+    Batch &b = sent_.back();
+    const int count = static_cast<int>(b.values.size());
+    for (int p = 0; p < size_; ++p) {
+      if (p == rank_) continue;
+      b.requests.emplace_back();
+      MPI_Isend(b.values.data(), count, MPI_DOUBLE, p, kTag, comm_, &b.requests.back());
+    }
+  }
+
+  std::vector<double> collect()
+  {
+    std::vector<double> others;
+    for (int p = 0; p < size_; ++p) {
+      if (p == rank_) continue;
+      MPI_Status status;
+      MPI_Probe(p, kTag, comm_, &status);
+      int count = 0;
+      MPI_Get_count(&status, MPI_DOUBLE, &count);
+      const std::size_t at = others.size();
+      others.resize(at + static_cast<std::size_t>(count));
+      MPI_Recv(others.data() + at, count, MPI_DOUBLE, p, kTag, comm_, MPI_STATUS_IGNORE);
+    }
+    return others;
+  }
+
+  // Waits until every posted value has been sent (after the last collect).
+  void finish() { release_sent(true); }
+
+private:
+  static constexpr int kTag = 0x5249;    // "RI"
+  struct Batch {
+    std::vector<double> values;
+    std::vector<MPI_Request> requests;
+  };
+  // Drops the batches whose sends are done (all of them, waiting, if `wait`).
+  void release_sent(bool wait)
+  {
+    std::vector<Batch> pending;
+    for (Batch &b : sent_) {
+      int done = 1;
+      const int n = static_cast<int>(b.requests.size());
+      if (wait)
+        MPI_Waitall(n, b.requests.data(), MPI_STATUSES_IGNORE);
+      else
+        MPI_Testall(n, b.requests.data(), &done, MPI_STATUSES_IGNORE);
+      if (!done) pending.push_back(std::move(b));
+    }
+    sent_ = std::move(pending);
+  }
+
+  MPI_Comm comm_;
+  int rank_ = 0, size_ = 1;
+  std::vector<Batch> sent_;
+};
 
 }    // namespace reinforce

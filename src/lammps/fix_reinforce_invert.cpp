@@ -110,7 +110,7 @@ Region *find_region(Domain *domain, const std::string &name)
 
 class FixReinforceInvert::Host : public reinforce::HostHooks {
 public:
-  explicit Host(FixReinforceInvert &fix) : f(fix) {}
+  explicit Host(FixReinforceInvert &fix) : f(fix), exchange(fix.world) {}
   // A raised ghost cutoff is put back on every way out of the invocation,
   // also when an ERROR unwinds through it (LAMMPS built with exceptions, or
   // used as a library): the host's next run must not keep the raised value.
@@ -336,6 +336,19 @@ public:
     return reinforce::mpi_gather_all(mine, f.world);
   }
 
+  void post_results(const std::vector<double> &mine) override
+  {
+    exchange.post(mine);
+  }
+  std::vector<double> collect_results() override
+  {
+    return exchange.collect();
+  }
+  void finish_results() override
+  {
+    exchange.finish();
+  }
+
   double wall_time() override
   {
     return MPI_Wtime();
@@ -353,6 +366,7 @@ public:
 
 private:
   FixReinforceInvert &f;
+  reinforce::MpiExchange exchange;
   double saved_cutghostuser = 0;
   bool raised = false;
   bool binned = false;        // source-built: bins set up for a raised cutoff

@@ -132,7 +132,9 @@ void FixReinforceInvert::invoke()
     FixReinforceInvert *fix;
     ~RestoreGhostCutoff() { fix->restore_ghost_cutoff(); }
   } restore{this};
+  exchange_.reset(new reinforce::MpiExchange(world));
   const reinforce::Totals t = reinforce::run_invocation(*this, options_);
+  exchange_.reset();
   output_ = reinforce::output_vector(t);
   // As delete_atoms does: the global count and the atom map.
   bigint nlocal = atom->nlocal;
@@ -338,6 +340,21 @@ double FixReinforceInvert::sum(double v)
 std::vector<double> FixReinforceInvert::gather_all(const std::vector<double> &mine)
 {
   return reinforce::mpi_gather_all(mine, world);
+}
+
+void FixReinforceInvert::post_results(const std::vector<double> &mine)
+{
+  exchange_->post(mine);
+}
+
+std::vector<double> FixReinforceInvert::collect_results()
+{
+  return exchange_->collect();
+}
+
+void FixReinforceInvert::finish_results()
+{
+  exchange_->finish();
 }
 
 double FixReinforceInvert::max(double v)

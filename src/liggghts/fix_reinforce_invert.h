@@ -16,6 +16,12 @@ FixStyle(reinforce/invert,FixReinforceInvert)
 #include "fix.h"
 #include "invocation.h"
 
+#include <memory>
+
+namespace reinforce {
+class MpiExchange;
+}
+
 namespace LAMMPS_NS {
 
 class FixReinforceInvert : public Fix, private reinforce::HostHooks {
@@ -43,7 +49,8 @@ private:
   int nmax_ = 0;              // length of pending_
   std::array<double, reinforce::kOutputSize> output_ = {};
   bool invoked_ = false;
-  double user_cutghost_ = -1;    // >= 0 while the ghost cutoff is raised
+  double user_cutghost_ = -1;                           // >= 0 while the ghost cutoff is raised
+  std::unique_ptr<reinforce::MpiExchange> exchange_;    // the rounds' results, per invocation
 
   void invoke();
   void check_multisphere_bodies();
@@ -63,6 +70,9 @@ private:
   double sum(double v) override;
   double max(double v) override;
   std::vector<double> gather_all(const std::vector<double> &mine) override;
+  void post_results(const std::vector<double> &mine) override;
+  std::vector<double> collect_results() override;
+  void finish_results() override;
   double wall_time() override;
   void log(const std::string &line) override;
   void fail(const std::string &message) override;
