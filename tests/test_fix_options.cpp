@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <random>
 #include <set>
 
 using namespace reinforce;
@@ -228,6 +231,59 @@ TEST(Schedule, PointsFallInTheirBlock)
   EXPECT_DOUBLE_EQ(c.x, 0.5);
   EXPECT_DOUBLE_EQ(c.y, 0.25);
   EXPECT_DOUBLE_EQ(c.z, 1.0 / 6);
+}
+
+// reach_beyond: every block whose centre lies in a subdomain stays within
+// that reach of it (the owner of the centre sees the whole block through
+// its ghosts), never more than half a block; 0 where the subdomain's faces
+// lie on block faces, and for a subdomain that holds no block centre.
+TEST(Schedule, ReachBeyondCoversTheBlocksOfASubdomain)
+{
+  const bool periodic[3] = {false, true, false};
+  const Vec3 lo{-1, 0, 2}, hi{1, 0.5, 3};
+  const BlockLattice l = make_block_lattice(lo, hi, periodic, 0.12);
+  const double half = 0.5 * std::max({l.width[0], l.width[1], l.width[2]});
+  std::mt19937_64 rng(7);
+  for (int trial = 0; trial < 500; ++trial) {
+    Vec3 sub_lo, sub_hi;
+    for (int d = 0; d < 3; ++d) {
+      std::uniform_real_distribution<double> u(lo[d], hi[d]);
+      const double a = u(rng), b = u(rng);
+      sub_lo[d] = trial % 5 == 0 ? lo[d] : std::min(a, b);
+      sub_hi[d] = trial % 5 == 0 ? hi[d] : std::max(a, b);
+    }
+    const double reach = l.reach_beyond(sub_lo, sub_hi);
+    EXPECT_TRUE(std::isfinite(reach));
+    EXPECT_GE(reach, 0);
+    EXPECT_LE(reach, half * (1 + 1e-12));
+    for (int i = 0; i < l.count[0]; ++i)
+      for (int j = 0; j < l.count[1]; ++j)
+        for (int k = 0; k < l.count[2]; ++k) {
+          const int b[3] = {i, j, k};
+          bool owned = true;
+          for (int d = 0; d < 3; ++d) {
+            const double c = lo[d] + (b[d] + 0.5) * l.width[d];
+            owned = owned && c >= sub_lo[d] && c < sub_hi[d];
+          }
+          if (!owned) continue;
+          for (int d = 0; d < 3; ++d) {
+            EXPECT_GE(lo[d] + b[d] * l.width[d], sub_lo[d] - reach - 1e-12);
+            EXPECT_LE(lo[d] + (b[d] + 1) * l.width[d], sub_hi[d] + reach + 1e-12);
+          }
+        }
+  }
+  // Faces on block faces: the blocks stay inside.
+  const Vec3 aligned_lo{lo.x + 2 * l.width[0], lo.y, lo.z + l.width[2]};
+  const Vec3 aligned_hi{lo.x + 5 * l.width[0], hi.y, lo.z + 3 * l.width[2]};
+  EXPECT_NEAR(l.reach_beyond(aligned_lo, aligned_hi), 0, 1e-12);
+  // A slice thinner than a block, between two centres: no block is its.
+  const Vec3 thin_lo{lo.x + 0.55 * l.width[0], lo.y, lo.z};
+  const Vec3 thin_hi{lo.x + 0.95 * l.width[0], hi.y, hi.z};
+  EXPECT_EQ(l.reach_beyond(thin_lo, thin_hi), 0);
+  // Off the lattice by a quarter block: a quarter block beyond.
+  const Vec3 off_lo{lo.x + 0.25 * l.width[0], lo.y, lo.z};
+  const Vec3 off_hi{lo.x + 2.25 * l.width[0], hi.y, hi.z};
+  EXPECT_NEAR(l.reach_beyond(off_lo, off_hi), 0.25 * l.width[0], 1e-12);
 }
 
 TEST(Summary, ReportsCountsAndTime)

@@ -394,7 +394,10 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
     const Footprint reach = footprint(settings, matrix_rmax, largest);
     const BlockLattice lattice =
         make_block_lattice(box.lo, box.hi, box.periodic, reach.write + reach.read);
-    const double cutoff = lattice.half_width() + reach.read;
+    // The owner of a block's centre sees the whole block plus the read
+    // reach: how far a block reaches past a subdomain depends on where the
+    // subdomain's faces fall on the lattice, so the largest over processes.
+    const double cutoff = host.max(lattice.reach_beyond(box.sub_lo, box.sub_hi)) + reach.read;
     if (!std::isfinite(cutoff))
       host.fail("Fix reinforce/invert: the reach of the relocation is not finite");
     host.ensure_ghost_cutoff(cutoff);

@@ -46,9 +46,25 @@ Vec3 BlockLattice::centre_of(Vec3 x) const
   return c;
 }
 
-double BlockLattice::half_width() const
+double BlockLattice::reach_beyond(Vec3 sub_lo, Vec3 sub_hi) const
 {
-  return 0.5 * std::max({width[0], width[1], width[2]});
+  double reach = 0;
+  for (int d = 0; d < 3; ++d) {
+    if (!(width[d] > 0)) continue;
+    // The blocks whose centres lie in [sub_lo, sub_hi), tested as
+    // centre_of() and in_subdomain() compute them, from a guess one block
+    // wider on each side.
+    const int from = std::max(0, static_cast<int>(std::floor((sub_lo[d] - lo[d]) / width[d])) - 1);
+    const int to =
+        std::min(count[d] - 1, static_cast<int>(std::floor((sub_hi[d] - lo[d]) / width[d])) + 1);
+    for (int k = from; k <= to; ++k) {
+      const double centre = lo[d] + (k + 0.5) * width[d];
+      if (!(centre >= sub_lo[d] && centre < sub_hi[d])) continue;
+      reach = std::max({reach, sub_lo[d] - (lo[d] + k * width[d]),
+                        lo[d] + (k + 1) * width[d] - sub_hi[d]});
+    }
+  }
+  return reach;
 }
 
 }    // namespace reinforce

@@ -20,9 +20,11 @@ struct BlockLattice {
   void block_of(Vec3 x, int b[3]) const;
   int colour_of(Vec3 x) const;
   Vec3 centre_of(Vec3 x) const;
-  // Largest distance from a point of a block to the block's centre, per
-  // dimension: how far beyond its subdomain a process may have to work.
-  double half_width() const;
+  // How far beyond the box [sub_lo, sub_hi) the blocks whose centres lie
+  // in it reach, the largest over the dimensions: how far beyond its
+  // subdomain a process may have to work (0 where the subdomain's faces lie
+  // on block faces; at most half a block).
+  double reach_beyond(Vec3 sub_lo, Vec3 sub_hi) const;
 };
 
 // Blocks at least min_width wide (as many as fit). A periodic dimension
