@@ -437,11 +437,13 @@ if sp_scenes:
             "\n**Model of larger runs** (this machine has 2 cores). With T1 and T2 the medians on 1 and 2 "
             "processes, N the targets and R the rounds: the per-target cost c = T1 / N, and the per-round "
             "overhead o = max(0, T2 - T1 / 2) / R, i.e. everything the second process did not halve is "
-            "charged to the rounds (refresh, ghost exchange, gathering the round's results). The model is "
-            "T(P) = c N / P + R o log2(P): the work divides among the processes and the per-round "
-            "communication grows like a tree collective. It assumes every round has at least P blocks with "
-            "targets (beyond that, processes idle) and that R stays as measured (it is fixed by space, not "
-            "by P).\n")
+            "charged to the rounds (refresh, ghost exchange, exchanging the round's results). The model is "
+            "T(P) = c N / P + R o k(P) with k(P) = min(P - 1, 26): the work divides among the processes, and "
+            "each round's results go point to point to the partners, the processes near enough to matter "
+            "(docs/design.md, \"Partners\"): 1 on 2 processes, at most the 26 neighbours of a regular grid. "
+            "Charging all of o to each partner is pessimistic (o also holds the ghost exchange). It assumes "
+            "every round has at least P blocks with targets (beyond that, processes idle) and that R stays "
+            "as measured (it is fixed by space, not by P).\n")
         ps = [1, 2, 8, 32, 128, 512]
         md.append("| scene | c (ms / target) | o (ms / round) | " + " | ".join(f"T({p}) s" for p in ps) + " |")
         md.append("|---|---|---|" + "---|" * len(ps))
@@ -450,7 +452,7 @@ if sp_scenes:
             c = one["op_seconds"] / n
             o = max(0.0, two["op_seconds"] - one["op_seconds"] / 2) / r
             md.append(f"| {name} | {c * 1e3:.3f} | {o * 1e3:.2f} | " +
-                      " | ".join(f"{c * n / p + r * o * math.log2(p):.3f}" for p in ps) + " |")
+                      " | ".join(f"{c * n / p + r * o * min(p - 1, 26):.3f}" for p in ps) + " |")
 else:
     md.append("Not run.")
 

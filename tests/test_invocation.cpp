@@ -86,8 +86,8 @@ public:
   double max(double v) override { return v; }
   std::vector<double> gather_all(const std::vector<double> &mine) override { return mine; }
   // One process: there are no others' results.
-  void post_results(const std::vector<double> &) override {}
-  std::vector<double> collect_results() override { return {}; }
+  void post_results(const std::vector<double> &, const std::vector<int> &) override {}
+  std::vector<double> collect_results(const std::vector<int> &) override { return {}; }
   void finish_results() override {}
   double wall_time() override { return 0; }
   void log(const std::string &line) override { logged.push_back(line); }

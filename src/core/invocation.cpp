@@ -14,13 +14,24 @@ namespace reinforce {
 namespace {
 
 // The engine's view of the atoms that can matter: those within `margin` of
-// a rebar sphere. Every atom is an obstacle; pending ones are vacant; only
-// matrix atoms of the fix group are pushed.
-std::vector<Particle> make_view(const AtomArrays &a, double margin, std::vector<int> &local)
+// a rebar sphere and inside the domain's view bounds. Every atom is an
+// obstacle; pending ones are vacant; only matrix atoms of the fix group are
+// pushed.
+std::vector<Particle> make_view(const AtomArrays &a, double margin, const Domain &domain,
+                                std::vector<int> &local)
 {
   std::vector<unsigned char> rebar(a.nall);
   for (int i = 0; i < a.nall; ++i) rebar[i] = (a.mask[i] & a.rebar_bit) != 0;
   local = spheres_near_rebar(a.nall, a.x, a.radius, rebar.data(), margin);
+  local.erase(
+      std::remove_if(local.begin(), local.end(),
+                     [&](int i) {
+                       for (int d = 0; d < 3; ++d)
+                         if (!(a.x[i][d] >= domain.view_lo[d] && a.x[i][d] <= domain.view_hi[d]))
+                           return true;
+                       return false;
+                     }),
+      local.end());
   std::vector<Particle> view;
   view.reserve(local.size());
   for (int i : local) {
@@ -309,6 +320,44 @@ bool touches(const BlockLattice &lattice, const Domain &box, const BlockKey &key
   return false;
 }
 
+// The processes whose round results this one needs, and which need its
+// own: those that can change an atom this one sees. A process relocates
+// blocks reaching at most `beyond` past its subdomain and moves atoms at
+// most `write` from a target, so it changes nothing farther than
+// beyond + write from its subdomain; this process sees atoms within `seen`
+// of its own (its view bounds) and owns atoms only inside it. Two
+// subdomains closer than beyond + write + seen in every dimension (nearest
+// periodic image) are partners, both ways. Ranks in ascending order; this
+// process is among them (the host skips itself).
+std::vector<int> exchange_partners(HostHooks &host, const Domain &domain, double beyond,
+                                   double write, double seen)
+{
+  const std::vector<double> boxes =
+      host.gather_all({domain.sub_lo.x, domain.sub_lo.y, domain.sub_lo.z, domain.sub_hi.x,
+                       domain.sub_hi.y, domain.sub_hi.z});
+  // A hair wider: a spare partner costs an empty message, a missing one
+  // would leave this process's view stale.
+  const double apart = (beyond + write + seen) * (1 + 1e-9);
+  std::vector<int> partners;
+  for (std::size_t p = 0; p + 6 <= boxes.size(); p += 6) {
+    bool near = true;
+    for (int d = 0; d < 3 && near; ++d) {
+      const double lo = boxes[p + d], hi = boxes[p + 3 + d];
+      const double period = domain.hi[d] - domain.lo[d];
+      double gap = INFINITY;
+      for (int shift = -1; shift <= 1; ++shift) {
+        if (shift != 0 && !domain.periodic[d]) continue;
+        const double s = shift * period;
+        gap =
+            std::min(gap, std::max({0.0, lo + s - domain.sub_hi[d], domain.sub_lo[d] - (hi + s)}));
+      }
+      near = gap <= apart;
+    }
+    if (near) partners.push_back(static_cast<int>(p / 6));
+  }
+  return partners;
+}
+
 }    // namespace
 
 std::array<double, kOutputSize> output_vector(const Totals &t)
@@ -397,17 +446,27 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
     // The owner of a block's centre sees the whole block plus the read
     // reach: how far a block reaches past a subdomain depends on where the
     // subdomain's faces fall on the lattice, so the largest over processes.
-    const double cutoff = host.max(lattice.reach_beyond(box.sub_lo, box.sub_hi)) + reach.read;
+    const double beyond = host.max(lattice.reach_beyond(box.sub_lo, box.sub_hi));
+    const double cutoff = beyond + reach.read;
     if (!std::isfinite(cutoff))
       host.fail("Fix reinforce/invert: the reach of the relocation is not finite");
     host.ensure_ghost_cutoff(cutoff);
     // Everything a relocation reads lies within reach.read of a target's
-    // centre, and a target touches a bar: the view needs no more.
+    // centre, and a target touches a bar: the view needs no more. Nor does
+    // it need more than the cutoff past the subdomain, whatever the host's
+    // ghosts hold: the results of the rounds reach this process only from
+    // the processes that can change something within that (exchange_partners).
     const double margin = reach.read + 2 * largest;
+    Domain domain = host.placement_domain();
+    for (int d = 0; d < 3; ++d) {
+      domain.view_lo[d] = std::max(domain.view_lo[d], domain.sub_lo[d] - cutoff);
+      domain.view_hi[d] = std::min(domain.view_hi[d], domain.sub_hi[d] + cutoff);
+    }
+    const std::vector<int> partners = exchange_partners(host, domain, beyond, reach.write, cutoff);
 
     a = host.atoms();
     std::vector<int> local;
-    std::vector<Particle> view = make_view(a, margin, local);
+    std::vector<Particle> view = make_view(a, margin, domain, local);
     // Targets, and how many fall in each round of the schedule. With size
     // keep the targets are split into size classes, largest first, each
     // class a pass over the colours: the voids that hold a sphere as it is
@@ -491,7 +550,6 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
                         totals.packing_overlaps, totals.packing_max_overlap));
     }
 
-    const Domain domain = host.placement_domain();
     std::unordered_map<std::int64_t, int> owned;    // id -> local index of the owned atom
     for (std::size_t k = 0; k < view.size(); ++k)
       if (view[k].owned) owned[view[k].id] = local[k];
@@ -546,7 +604,7 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
       append_records(rel, options.keep_unplaced, records);
     };
     auto collect = [&]() {
-      const std::vector<double> others = host.collect_results();
+      const std::vector<double> others = host.collect_results(partners);
       apply_to_host(host, a, owned, others, doomed);
       live.apply(others, domain);
     };
@@ -568,7 +626,7 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
       if (!waiting.empty()) relocate_part(r, waiting, true, records);
       apply_to_host(host, a, owned, records, doomed);
       live.apply(records, domain);
-      host.post_results(records);
+      host.post_results(records, partners);
       previous = r;
     }
     if (previous >= 0) {

@@ -53,15 +53,17 @@ public:
   virtual double max(double v) = 0;
   // Every process's values, concatenated in rank order (collective).
   virtual std::vector<double> gather_all(const std::vector<double> &mine) = 0;
-  // A round's results, exchanged without a barrier: post_results sends this
-  // process's values to every other process and returns at once;
-  // collect_results returns the other processes' values (not this one's) of
-  // the oldest round posted and not yet collected, in rank order, waiting
-  // only for those not yet there; finish_results, after the last collect,
-  // waits until every posted value has been sent. Every process posts and
+  // A round's results, exchanged without a barrier between partners
+  // (`ranks`: ascending, the same set every round, symmetric between
+  // processes; this process's own rank in it is skipped): post_results
+  // sends this process's values to each partner and returns at once;
+  // collect_results returns the partners' values of the oldest round posted
+  // and not yet collected, concatenated in rank order, waiting only for
+  // those not yet there; finish_results, after the last collect, waits
+  // until every posted value has been sent. Every process posts and
   // collects the same rounds in the same order.
-  virtual void post_results(const std::vector<double> &mine) = 0;
-  virtual std::vector<double> collect_results() = 0;
+  virtual void post_results(const std::vector<double> &mine, const std::vector<int> &ranks) = 0;
+  virtual std::vector<double> collect_results(const std::vector<int> &ranks) = 0;
   virtual void finish_results() = 0;
 
   // Optional: the host's own neighbour list, for the overlap check that

@@ -25,19 +25,15 @@ inline std::vector<double> mpi_gather_all(const std::vector<double> &mine, MPI_C
 }
 
 // The rounds' results without a barrier (HostHooks::post_results and
-// collect_results): post() sends this rank's values to every other rank
-// and returns; collect() receives the other ranks' values of the oldest
-// round posted and not yet collected, in rank order. A rank waits only for
+// collect_results): post() sends this rank's values to the partner ranks
+// and returns; collect() receives the partners' values of the oldest round
+// posted and not yet collected, in rank order. A rank waits only for
 // the ranks whose values are not there yet, and does its own work in the
 // meantime. Messages between two ranks arrive in the order sent (MPI's
 // non-overtaking rule), so one tag serves every round.
 class MpiExchange {
 public:
-  explicit MpiExchange(MPI_Comm comm) : comm_(comm)
-  {
-    MPI_Comm_rank(comm, &rank_);
-    MPI_Comm_size(comm, &size_);
-  }
+  explicit MpiExchange(MPI_Comm comm) : comm_(comm) { MPI_Comm_rank(comm, &rank_); }
   MpiExchange(const MpiExchange &) = delete;
   MpiExchange &operator=(const MpiExchange &) = delete;
   // Sends still under way (an error unwound through the rounds) may still
@@ -52,23 +48,23 @@ public:
     }
   }
 
-  void post(const std::vector<double> &mine)
+  void post(const std::vector<double> &mine, const std::vector<int> &ranks)
   {
     release_sent(false);
     sent_.push_back({mine, {}});
     Batch &b = sent_.back();
     const int count = static_cast<int>(b.values.size());
-    for (int p = 0; p < size_; ++p) {
+    for (int p : ranks) {
       if (p == rank_) continue;
       b.requests.emplace_back();
       MPI_Isend(b.values.data(), count, MPI_DOUBLE, p, kTag, comm_, &b.requests.back());
     }
   }
 
-  std::vector<double> collect()
+  std::vector<double> collect(const std::vector<int> &ranks)
   {
     std::vector<double> others;
-    for (int p = 0; p < size_; ++p) {
+    for (int p : ranks) {
       if (p == rank_) continue;
       MPI_Status status;
       MPI_Probe(p, kTag, comm_, &status);
@@ -107,7 +103,7 @@ private:
   }
 
   MPI_Comm comm_;
-  int rank_ = 0, size_ = 1;
+  int rank_ = 0;
   std::vector<Batch> sent_;
 };
 

@@ -336,13 +336,13 @@ public:
     return reinforce::mpi_gather_all(mine, f.world);
   }
 
-  void post_results(const std::vector<double> &mine) override
+  void post_results(const std::vector<double> &mine, const std::vector<int> &ranks) override
   {
-    exchange.post(mine);
+    exchange.post(mine, ranks);
   }
-  std::vector<double> collect_results() override
+  std::vector<double> collect_results(const std::vector<int> &ranks) override
   {
-    return exchange.collect();
+    return exchange.collect(ranks);
   }
   void finish_results() override
   {

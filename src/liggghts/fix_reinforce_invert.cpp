@@ -342,14 +342,15 @@ std::vector<double> FixReinforceInvert::gather_all(const std::vector<double> &mi
   return reinforce::mpi_gather_all(mine, world);
 }
 
-void FixReinforceInvert::post_results(const std::vector<double> &mine)
+void FixReinforceInvert::post_results(const std::vector<double> &mine,
+                                      const std::vector<int> &ranks)
 {
-  exchange_->post(mine);
+  exchange_->post(mine, ranks);
 }
 
-std::vector<double> FixReinforceInvert::collect_results()
+std::vector<double> FixReinforceInvert::collect_results(const std::vector<int> &ranks)
 {
-  return exchange_->collect();
+  return exchange_->collect(ranks);
 }
 
 void FixReinforceInvert::finish_results()

@@ -70,8 +70,8 @@ private:
   double sum(double v) override;
   double max(double v) override;
   std::vector<double> gather_all(const std::vector<double> &mine) override;
-  void post_results(const std::vector<double> &mine) override;
-  std::vector<double> collect_results() override;
+  void post_results(const std::vector<double> &mine, const std::vector<int> &ranks) override;
+  std::vector<double> collect_results(const std::vector<int> &ranks) override;
   void finish_results() override;
   double wall_time() override;
   void log(const std::string &line) override;
