@@ -432,27 +432,50 @@ if sp_scenes:
             f"{fmt(two.get('busiest'), '.0f')} | {fmt(two.get('balance'), '.2f')} | "
             f"{one['deleted']:.0f}, {two['deleted']:.0f} |")
         model_rows.append((s[8:], one, two))
-    if model_rows:
+    # The exchange's cost per partner and round: least-squares slope of
+    # exchange_cost's microseconds per round against partners.
+    ex = [(num(r["partners"]), num(r["us"])) for r in
+          csv.DictReader(open(os.path.join(out_dir, "exchange_cost.tsv")), delimiter="\t",
+                         fieldnames=["partners", "us"])] if os.path.exists(
+        os.path.join(out_dir, "exchange_cost.tsv")) else []
+    ex = [(k, t) for k, t in ex if k is not None and t is not None]
+    m = None
+    if len(ex) >= 2:
+        kx = sum(k for k, _ in ex) / len(ex)
+        ty = sum(t for _, t in ex) / len(ex)
+        m = sum((k - kx) * (t - ty) for k, t in ex) / sum((k - kx) ** 2 for k, _ in ex) * 1e-6
+    if model_rows and m is not None:
         md.append(
             "\n**Model of larger runs** (this machine has 2 cores). With T1 and T2 the medians on 1 and 2 "
-            "processes, N the targets and R the rounds: the per-target cost c = T1 / N, and the per-round "
-            "overhead o = max(0, T2 - T1 / 2) / R, i.e. everything the second process did not halve is "
-            "charged to the rounds (refresh, ghost exchange, exchanging the round's results). The model is "
-            "T(P) = c N / P + R o k(P) with k(P) = min(P - 1, 26): the work divides among the processes, and "
-            "each round's results go point to point to the partners, the processes near enough to matter "
-            "(docs/design.md, \"Partners\"): 1 on 2 processes, at most the 26 neighbours of a regular grid. "
-            "Charging all of o to each partner is pessimistic (o also holds the ghost exchange). It assumes "
-            "every round has at least P blocks with targets (beyond that, processes idle) and that R stays "
-            "as measured (it is fixed by space, not by P).\n")
+            "processes, N the targets, R the rounds and B the blocks with targets summed over the rounds "
+            "(the fix's schedule line): the per-target cost c = T1 / N; the per-round overhead o = max(0, T2 - "
+            "T1 / 2) / R, i.e. everything the second process did not halve is charged to the rounds (ghost "
+            "exchange, view over the ghosts, waiting, one partner's messages); W = B / R, the processes a "
+            "round can keep busy on average (one per block); and m, the cost of one more partner per round, "
+            f"measured by `exchange_cost` (a round's post and collect with 1 to 26 partners, 2 processes): "
+            f"{m * 1e6:.2f} microseconds. The model is T(P) = c N / min(P, W) + R (o + m (k(P) - 1)) for P "
+            "of 2 or more, with k(P) = min(P - 1, 26) partners: each round's results go point to point to "
+            "the processes near enough to matter (docs/design.md, \"Partners\"), at most the 26 neighbours "
+            "of a regular grid. m is for shared memory; a network's latency of a few microseconds per "
+            "message adds R x 26 x that, about a millisecond. It assumes the blocks of a round spread over "
+            "the processes and R stays as measured (fixed by space, not by P); o is charged whole at every P, "
+            "although its ghost part shrinks with the subdomains.\n")
         ps = [1, 2, 8, 32, 128, 512]
-        md.append("| scene | c (ms / target) | o (ms / round) | " + " | ".join(f"T({p}) s" for p in ps) + " |")
-        md.append("|---|---|---|" + "---|" * len(ps))
+        md.append("| scene | c (ms / target) | o (ms / round) | W (blocks / round) | " +
+                  " | ".join(f"T({p}) s" for p in ps) + " |")
+        md.append("|---|---|---|---|" + "---|" * len(ps))
         for name, one, two in model_rows:
             n, r = one["targets"], max(one["rounds"] or 1, 1)
             c = one["op_seconds"] / n
             o = max(0.0, two["op_seconds"] - one["op_seconds"] / 2) / r
-            md.append(f"| {name} | {c * 1e3:.3f} | {o * 1e3:.2f} | " +
-                      " | ".join(f"{c * n / p + r * o * min(p - 1, 26):.3f}" for p in ps) + " |")
+            w = (two.get("blocks") or one.get("blocks") or r) / r
+
+            def model(p):
+                if p == 1:
+                    return c * n
+                return c * n / min(p, w) + r * (o + m * (min(p - 1, 26) - 1))
+            md.append(f"| {name} | {c * 1e3:.3f} | {o * 1e3:.2f} | {w:.1f} | " +
+                      " | ".join(f"{model(p):.3f}" for p in ps) + " |")
 else:
     md.append("Not run.")
 

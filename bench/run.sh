@@ -73,7 +73,7 @@ meta="$out/meta.tsv"
 refs="$out/reference.tsv"
 versus="$out/versus.tsv"      # each method against a second reference (make_packing.lmp's)
 profiles="$out/profile.tsv"   # the fix's defaults: profile beside each reference's
-echo -e "scene\tatoms\tmethod\tparam\tnp\trep\ttargets\trelocated\tdeleted\tvolume_before\tvolume_after\toverlap\tsolves\top_seconds\twall_seconds\tpeak_kb\tremoved\trounds\trebar\tbalance\tbusiest" > "$results"
+echo -e "scene\tatoms\tmethod\tparam\tnp\trep\ttargets\trelocated\tdeleted\tvolume_before\tvolume_after\toverlap\tsolves\top_seconds\twall_seconds\tpeak_kb\tremoved\trounds\trebar\tbalance\tbusiest\tblocks" > "$results"
 echo -e "scene\tchunk\tseconds\tatoms\tmatrix_rebar\tmatrix_matrix" > "$curves"
 echo -e "scene\tmethod\tparam\tshell_ratio\tshell_ratio_se\tremoved_ratio\tks\ttargets\tdeleted\tmoved_nontargets\tbulk\tref_bulk\tref_shell_ratio\tshell_vs_reference\tbin_diff_max" > "$qual"
 echo -e "scene\tkind\tseed\tmatrix\trebar\tbox\tphi\tradii\twall_seconds\tcpu_seconds\tgrown\tbulk\tshell_ratio\tshell_ratio_se" > "$refs"
@@ -131,11 +131,11 @@ run_fix() {
   local v=()
   for k in targets relocated deleted volume_before volume_after overlap solves seconds; do v+=("$(result_value "$run/log" $k)"); done
   local IFS=$'\t'
-  # The schedule line: the busiest process's targets over the rounds and
-  # the balance between processes (1 = even).
+  # The schedule line: the busiest process's targets over the rounds, the
+  # balance between processes (1 = even) and the blocks with targets.
   local sched
-  sched=$(sed -n 's/^fix reinforce\/invert: schedule: .* busiest process \([0-9]*\) targets over the rounds, balance \([0-9.]*\) over .*/\2\t\1/p' "$run/log" | tail -1)
-  [ -n "$sched" ] || sched=$'\t'
+  sched=$(sed -n 's/^fix reinforce\/invert: schedule: .* in \([0-9]*\) blocks, busiest process \([0-9]*\) targets over the rounds, balance \([0-9.]*\) over .*/\3\t\2\t\1/p' "$run/log" | tail -1)
+  [ -n "$sched" ] || sched=$'\t\t'
   echo -e "$name\t$(atoms_of "$scene")\t$method\t$param\t$np\t$rep\t${v[*]}\t$wall\t$peak\t$(result_value "$run/log" removed)\t$(result_value "$run/log" rounds)\t${REBAR:-}\t$sched" >> "$results"
   last_run=$run
 }
@@ -490,6 +490,9 @@ if part narrow; then
 fi
 part liggghts && liggghts_part 2
 part speedup && speedup beam060 "$out/scenes/beam060.data" 25
+# The cost of the rounds' exchange against the number of partners (the
+# model of larger runs).
+part speedup && mpirun -np 2 "$REINFORCE_BUILD/bench/exchange_cost" > "$out/exchange_cost.tsv"
 part gap && series_gap beam060 "$out/scenes/beam060.data" 0.0075 3
 part rbar && series_rbar "$beam/matrix_phi060.data.gz" 0.5 0 3
 part relax && for phi in 050 060 064; do

@@ -148,11 +148,20 @@ TEST(Invocation, RelocatesDeletesAndReports)
   // The schedule line (per-process work over the rounds: one process does
   // it all), then the summary line.
   ASSERT_EQ(h.logged.size(), 2u);
+  // The blocks: at least one per round, at most one per target.
+  int blocks = 0;
+  ASSERT_EQ(std::sscanf(h.logged[0].c_str(),
+                        "fix reinforce/invert: schedule: %*d rounds, %*d targets in %d blocks",
+                        &blocks),
+            1)
+      << h.logged[0];
+  EXPECT_GE(blocks, t.rounds);
+  EXPECT_LE(blocks, t.stats.targets);
   char schedule[200];
   std::snprintf(schedule, sizeof schedule,
-                "fix reinforce/invert: schedule: %d rounds, %lld targets, busiest process %lld "
-                "targets over the rounds, balance 1.00 over 1 processes\n",
-                t.rounds, static_cast<long long>(t.stats.targets),
+                "fix reinforce/invert: schedule: %d rounds, %lld targets in %d blocks, busiest "
+                "process %lld targets over the rounds, balance 1.00 over 1 processes\n",
+                t.rounds, static_cast<long long>(t.stats.targets), blocks,
                 static_cast<long long>(t.stats.targets));
   EXPECT_EQ(h.logged[0], schedule);
   EXPECT_EQ(h.logged[1].rfind("fix reinforce/invert: ", 0), 0u);

@@ -639,14 +639,18 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
     double busiest = 0;
     for (double most : reduce_all(host, work, true)) busiest += most;
     const double processes = host.sum(1.0);
+    // Blocks with targets, summed over the rounds: per round, the most
+    // processes that can have work.
+    const double blocks = static_cast<double>(my_blocks.size() + other_blocks.size());
     if (totals.rounds > 0) {
       // Balance: the targets over what the busiest process of each round
       // would do if every process were as busy (1 = even).
       char line[300];
-      std::snprintf(line, sizeof line,
-                    "fix reinforce/invert: schedule: %d rounds, %.0f targets, busiest process "
-                    "%.0f targets over the rounds, balance %.2f over %.0f processes\n",
-                    totals.rounds, targets, busiest, targets / (busiest * processes), processes);
+      std::snprintf(
+          line, sizeof line,
+          "fix reinforce/invert: schedule: %d rounds, %.0f targets in %.0f blocks, busiest "
+          "process %.0f targets over the rounds, balance %.2f over %.0f processes\n",
+          totals.rounds, targets, blocks, busiest, targets / (busiest * processes), processes);
       host.log(line);
     }
     host.restore_ghost_cutoff();
