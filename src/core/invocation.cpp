@@ -74,10 +74,11 @@ std::string format(const char *fmt, double a, double b = 0)
   return line;
 }
 
-// Every round's results go to every process by atom ID as [id, what, x, y,
+// Every round's results go to the partner processes (exchange_partners: all
+// that can see or own an atom they change) by atom ID as [id, what, x, y,
 // z, r] records, what = 0 placed (x: new centre, in the frame of the
 // target's in-box copy), 1 deleted, 2 kept, 3 pushed (x: the displacement).
-// The owner of an atom applies them to the host's atom; every process
+// The owner of an atom applies them to the host's atom; each partner
 // applies them to its view, so that the next round needs no migration and
 // no new ghosts from the host. The records of one round touch each atom
 // once at most (the blocks of a round are independent), so a process may

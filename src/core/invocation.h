@@ -116,7 +116,8 @@ std::array<double, kOutputSize> output_vector(const Totals &t);
 
 // Runs one invocation: radius range, ghost reach, one refresh, targets, the
 // rounds of the block schedule (each round's results delivered to the
-// atoms' owners and applied to every process's view), deletions, totals
+// atoms' owners and applied to the views of the processes that see them),
+// deletions, totals
 // and the log lines. Collective: every process calls it.
 Totals run_invocation(HostHooks &host, const FixOptions &options);
 
