@@ -6,6 +6,8 @@
 #include <cstdio>
 
 #include <cmath>
+#include <functional>
+#include <memory>
 #include <random>
 #include <stdexcept>
 
@@ -50,6 +52,8 @@ public:
     a.pending = pending.data();
     a.group_bit = kGroup;
     a.rebar_bit = kRebar;
+    a.frozen_bits = frozen_bits;
+    a.frozen_by = "fix other";
     return a;
   }
   void set_pending(int i, bool p) override { pending[i] = p; }
@@ -61,6 +65,8 @@ public:
     Domain d;
     d.lo = {0, 0, 0};
     d.hi = d.view_hi = d.sub_hi = {1, 1, 1};
+    d.walls = walls;
+    d.region = region;
     return d;
   }
   void move(int i, Vec3 x, double r) override
@@ -91,6 +97,11 @@ public:
   void finish_results() override {}
   double wall_time() override { return 0; }
   void log(const std::string &line) override { logged.push_back(line); }
+  std::vector<std::string> warned;
+  void warn(const std::string &message) override { warned.push_back(message); }
+  int frozen_bits = 0;
+  std::shared_ptr<const Boundaries> walls;
+  std::function<bool(const Vec3 &, double)> region;
   void fail(const std::string &message) override { throw std::runtime_error(message); }
 };
 
@@ -283,6 +294,16 @@ TEST(Invocation, NoMatrixDoesNothing)
   EXPECT_EQ(t.stats.targets, 0);
   EXPECT_EQ(t.stats.solves, 0);
   EXPECT_EQ(h.logged.size(), 1u);
+  // Said as a warning, and the summary line shows no infinite radius.
+  ASSERT_EQ(h.warned.size(), 1u);
+  EXPECT_EQ(h.warned[0], "Fix reinforce/invert has no matrix sphere (an atom of the fix group "
+                         "outside the rebar group): nothing to relocate");
+  EXPECT_EQ(h.logged[0].find("rmin inf"), std::string::npos) << h.logged[0];
+  // With matrix spheres: no warning.
+  MemoryHost m;
+  fill(m, 3);
+  run_invocation(m, parse_fix_arguments({"0", "bars"}));
+  EXPECT_TRUE(m.warned.empty());
 }
 
 // No target anywhere: one refresh at the start and nothing per round.
@@ -331,27 +352,28 @@ TEST(Invocation, ManyDeletedSaysWhy)
       run_invocation(h, parse_fix_arguments({"0", "bars", "size", "fit", "radius", "0.3", "0.3"}));
   ASSERT_GT(t.stats.targets, 0);
   ASSERT_EQ(t.deleted, t.stats.targets);
-  char expected[200];
-  std::snprintf(
-      expected, sizeof expected,
-      "fix reinforce/invert: unplaced: %.0f of %lld targets (%.0f%%) found no void with a "
-      "radius in [0.3, 0.3] and were deleted",
-      t.deleted, static_cast<long long>(t.stats.targets), 100.0 * t.deleted / t.stats.targets);
+  char expected[300];
+  std::snprintf(expected, sizeof expected,
+                "fix reinforce/invert: unplaced: %.0f of %lld targets (%.0f%%) were deleted: "
+                "%.0f found no void with a radius in [0.3, 0.3] (in a dense packing of close "
+                "radii few voids take even the smallest; the radius keyword widens the "
+                "accepted range); unplaced keep leaves them in place\n",
+                t.deleted, static_cast<long long>(t.stats.targets),
+                100.0 * t.deleted / t.stats.targets, t.deleted);
   ASSERT_FALSE(h.logged.empty());
-  EXPECT_EQ(h.logged.back().rfind(expected, 0), 0u) << h.logged.back();
-  EXPECT_NE(h.logged.back().find("radius keyword"), std::string::npos);
+  EXPECT_EQ(h.logged.back(), expected);
   // Kept instead of deleted: no such line.
   MemoryHost k;
   fill(k, 8);
   run_invocation(k, parse_fix_arguments(
                         {"0", "bars", "size", "fit", "radius", "0.3", "0.3", "unplaced", "keep"}));
-  for (const std::string &line : k.logged) EXPECT_EQ(line.find("found no void"), std::string::npos);
+  for (const std::string &line : k.logged) EXPECT_EQ(line.find("unplaced:"), std::string::npos);
   // The defaults on the same scene: fewer than one in ten deleted, no line.
   MemoryHost d;
   fill(d, 8);
   const Totals td = run_invocation(d, parse_fix_arguments({"0", "bars"}));
   ASSERT_LT(td.deleted, 0.1 * td.stats.targets);
-  for (const std::string &line : d.logged) EXPECT_EQ(line.find("found no void"), std::string::npos);
+  for (const std::string &line : d.logged) EXPECT_EQ(line.find("unplaced:"), std::string::npos);
 }
 
 // Rebar of radius 0 is refused with one clear message (a point has no
@@ -508,4 +530,175 @@ TEST(Invocation, ShortHostListFallsBackToTheGrid)
   const Totals te = run_invocation(exact, options);
   EXPECT_GT(exact.queries, 0);
   expect_same_relocation(exact, te, reference, tr);
+}
+
+// A target with nothing around it but the bar: the log says it had no
+// neighbours within search, not that the packing was dense.
+TEST(Invocation, LoneTargetSaysItHadNoNeighbours)
+{
+  MemoryHost h;
+  for (double x = 0.2; x < 0.8; x += 0.05) h.add({x, 0.5, 0.5}, 0.03, kGroup | kRebar);
+  h.add({0.5, 0.53, 0.5}, 0.02, kGroup);
+  const Totals t = run_invocation(h, parse_fix_arguments({"0", "bars"}));
+  ASSERT_EQ(t.stats.targets, 1);
+  EXPECT_EQ(t.deleted, 1);
+  EXPECT_EQ(t.stats.isolated, 1);
+  ASSERT_FALSE(h.logged.empty());
+  EXPECT_EQ(h.logged.back(), "fix reinforce/invert: unplaced: 1 of 1 targets (100%) were deleted: "
+                             "1 had fewer than four neighbours within search 0.04 (the search "
+                             "keyword widens it); unplaced keep leaves them in place\n");
+}
+
+// A bar sphere larger than the box: the line says so.
+TEST(Invocation, BarLargerThanTheBoxIsNamed)
+{
+  MemoryHost h;
+  h.add({0.5, 0.5, 0.5}, 0.7, kGroup | kRebar);
+  for (double x = 0.1; x < 0.95; x += 0.2)
+    for (double y = 0.1; y < 0.95; y += 0.2) h.add({x, y, 0.5}, 0.05, kGroup);
+  const Totals t = run_invocation(h, parse_fix_arguments({"0", "bars"}));
+  ASSERT_GT(t.deleted, 0);
+  ASSERT_FALSE(h.logged.empty());
+  EXPECT_NE(h.logged.back().find("were deleted: a bar sphere (radius 0.7) is larger than the box"),
+            std::string::npos)
+      << h.logged.back();
+}
+
+namespace {
+
+// A second bar (another reinforce/invert fix's rebar, group kOther)
+// crossing the first: in the fix group `all`, overlapping the first bar.
+void add_crossing_bar(MemoryHost &h)
+{
+  for (double y = 0.03; y < 0.97; y += 0.05) h.add({0.5, y, 0.52}, 0.03, kGroup | kOther);
+}
+
+}    // namespace
+
+// The rebar of another reinforce/invert fix is never moved or deleted, and
+// the log says how many of its atoms overlapped this fix's bars.
+TEST(Invocation, OtherFixesRebarIsLeftAlone)
+{
+  MemoryHost h;
+  fill(h, 4);
+  add_crossing_bar(h);
+  std::vector<std::array<double, 3>> before;
+  std::vector<double> radius_before;
+  for (std::size_t i = 0; i < h.pos.size(); ++i)
+    if (h.mask[i] & kOther) {
+      before.push_back(h.pos[i]);
+      radius_before.push_back(h.radius[i]);
+    }
+  h.frozen_bits = kOther;
+  run_invocation(h, parse_fix_arguments({"0", "bars"}));
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < h.pos.size(); ++i)
+    if (h.mask[i] & kOther) {
+      ASSERT_LT(k, before.size());
+      EXPECT_EQ(h.pos[i], before[k]);
+      EXPECT_EQ(h.radius[i], radius_before[k]);
+      ++k;
+    }
+  EXPECT_EQ(k, before.size());    // none deleted
+  bool said = false;
+  for (const std::string &line : h.logged)
+    said = said || (line.rfind("fix reinforce/invert: left alone ", 0) == 0 &&
+                    line.find(" atoms that overlap the bars: they are rebar of fix other\n") !=
+                        std::string::npos);
+  EXPECT_TRUE(said);
+  // Not frozen, the same atoms are targets: the test scene exercises it.
+  MemoryHost m;
+  fill(m, 4);
+  add_crossing_bar(m);
+  run_invocation(m, parse_fix_arguments({"0", "bars"}));
+  std::size_t same = 0;
+  k = 0;
+  for (std::size_t i = 0; i < m.pos.size(); ++i)
+    if (m.mask[i] & kOther) same += k < before.size() && m.pos[i] == before[k++];
+  EXPECT_LT(same, before.size());
+}
+
+namespace {
+
+// Every sphere that moved: its centre before and after, and its radius.
+struct Moved {
+  Vec3 from, to;
+  double r;
+};
+std::vector<Moved> moved_spheres(const MemoryHost &before, const MemoryHost &after)
+{
+  std::vector<Moved> out;
+  std::size_t j = 0;
+  for (std::size_t i = 0; i < before.pos.size() && j < after.pos.size(); ++i) {
+    if (before.tag[i] != after.tag[j]) continue;    // deleted
+    const auto &a = before.pos[i], &b = after.pos[j];
+    if (a != b || before.radius[i] != after.radius[j])
+      out.push_back({{a[0], a[1], a[2]}, {b[0], b[1], b[2]}, after.radius[j]});
+    ++j;
+  }
+  return out;
+}
+
+}    // namespace
+
+// Walls of each kind (a plane, a cylinder, a mesh of two triangles) just
+// beside the bar: no moved sphere crosses one or overlaps it, with and
+// without pushing; without the walls the same scene does cross them.
+TEST(Invocation, MovedSpheresStayClearOfTheWalls)
+{
+  const double z0 = 0.47;
+  std::vector<std::shared_ptr<Boundaries>> kinds(3, nullptr);
+  for (auto &k : kinds) k = std::make_shared<Boundaries>();
+  kinds[0]->add(Plane{{0, 0, z0}, {0, 0, 1}});
+  kinds[1]->add(Cylinder{{0, 0.5, 0.56}, {1, 0, 0}, 0.09});
+  kinds[2]->add(Triangle{{-1, -1, z0}, {3, -1, z0}, {-1, 3, z0}});
+  kinds[2]->add(Triangle{{3, -1, z0}, {3, 3, z0}, {-1, 3, z0}});
+  for (const auto &args : {std::vector<std::string>{"0", "bars"},
+                           std::vector<std::string>{"0", "bars", "push", "0.01"}}) {
+    for (std::size_t kind = 0; kind < kinds.size(); ++kind) {
+      int crossed_without = 0;
+      for (bool with_walls : {true, false}) {
+        MemoryHost h;
+        fill(h, 5);
+        const MemoryHost before = h;
+        if (with_walls) h.walls = kinds[kind];
+        const Totals t = run_invocation(h, parse_fix_arguments(args));
+        ASSERT_GT(t.stats.relocated, 0);
+        int bad = 0;
+        for (const Moved &m : moved_spheres(before, h))
+          bad += !kinds[kind]->admits(m.from, m.to, m.r, 1e-6);
+        if (with_walls)
+          EXPECT_EQ(bad, 0) << "kind " << kind;
+        else
+          crossed_without = bad;
+        if (with_walls) EXPECT_LE(worst_matrix_overlap(h), 1e-6);
+      }
+      EXPECT_GT(crossed_without, 0) << "kind " << kind;
+    }
+  }
+}
+
+// region: the whole sphere inside, not only its centre.
+TEST(Invocation, RegionHoldsWholeSpheres)
+{
+  const double top = 0.55;
+  auto inside = [top](const Vec3 &c, double r) { return c.z + r <= top; };
+  int out_without = 0;
+  for (bool with_region : {true, false}) {
+    MemoryHost h;
+    fill(h, 6);
+    const MemoryHost before = h;
+    // The centre-only test the region used to be.
+    h.region = with_region ? std::function<bool(const Vec3 &, double)>(inside)
+                           : [top](const Vec3 &c, double) { return c.z <= top; };
+    const Totals t = run_invocation(h, parse_fix_arguments({"0", "bars"}));
+    ASSERT_GT(t.stats.relocated, 0);
+    int out = 0;
+    for (const Moved &m : moved_spheres(before, h)) out += m.to.z + m.r * (1 - 1e-6) > top;
+    if (with_region)
+      EXPECT_EQ(out, 0);
+    else
+      out_without = out;
+  }
+  EXPECT_GT(out_without, 0);
 }

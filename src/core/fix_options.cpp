@@ -139,6 +139,16 @@ FixOptions parse_fix_arguments(const std::vector<std::string> &args)
           throw OptionError(kIllegal + "displaced must be in (0, 1] or 'none'");
       }
       i += 2;
+    } else if (key == "walls") {
+      value(key, 1);
+      if (args[i + 1] == "check")
+        o.walls_ignore = false;
+      else if (args[i + 1] == "ignore")
+        o.walls_ignore = true;
+      else
+        throw OptionError(kIllegal + "walls must be 'check' or 'ignore', got '" + args[i + 1] +
+                          "'");
+      i += 2;
     } else {
       throw OptionError(kIllegal + "unknown keyword '" + key + "'");
     }

@@ -36,6 +36,9 @@ struct FixOptions {
   double push = 0;
   bool displaced_set = false;    // else never
   double displaced = 0.5;
+  // walls ignore: the host's wall fixes are not read, and a wall the host
+  // cannot describe does not stop the run (the user takes the risk).
+  bool walls_ignore = false;
 };
 
 // Smallest accepted `tol`: below it the rounding of coordinates (and of the

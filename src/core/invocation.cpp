@@ -41,7 +41,8 @@ std::vector<Particle> make_view(const AtomArrays &a, double margin, const Domain
     p.id = a.tag[i];
     p.role = rebar[i] ? Role::Rebar : (a.pending[i] ? Role::Target : Role::Matrix);
     p.owned = i < a.nlocal;
-    p.pushable = (a.mask[i] & a.group_bit) != 0;
+    p.other_rebar = !rebar[i] && (a.mask[i] & a.frozen_bits) != 0;
+    p.pushable = (a.mask[i] & a.group_bit) != 0 && !p.other_rebar;
     view.push_back(p);
   }
   return view;
@@ -49,7 +50,13 @@ std::vector<Particle> make_view(const AtomArrays &a, double margin, const Domain
 
 bool is_matrix(const AtomArrays &a, int i)
 {
-  return (a.mask[i] & a.group_bit) && !(a.mask[i] & a.rebar_bit);
+  return (a.mask[i] & a.group_bit) && !(a.mask[i] & (a.rebar_bit | a.frozen_bits));
+}
+
+// In the fix group, but in the rebar of another reinforce/invert fix.
+bool is_left_alone(const AtomArrays &a, int i)
+{
+  return (a.mask[i] & a.group_bit) && !(a.mask[i] & a.rebar_bit) && (a.mask[i] & a.frozen_bits);
 }
 
 // The one copy of an atom that lies in the box (periodic images lie outside).
@@ -359,6 +366,48 @@ std::vector<int> exchange_partners(HostHooks &host, const Domain &domain, double
   return partners;
 }
 
+// The line that says why many targets were deleted, naming what is true of
+// them: no spheres around them within `search`, a bar larger than the box,
+// or no void in the accepted radius range (the usual cause in a dense
+// packing of close radii, where few voids take even the smallest).
+std::string unplaced_line(const Stats &s, std::int64_t no_place, double rmin, double rmax,
+                          double search, double rebar_rmax, bool bar_exceeds_box)
+{
+  char part[300];
+  std::snprintf(part, sizeof part,
+                "fix reinforce/invert: unplaced: %lld of %lld targets (%.0f%%) were deleted: ",
+                static_cast<long long>(no_place), static_cast<long long>(s.targets),
+                100.0 * no_place / s.targets);
+  std::string line = part;
+  std::vector<std::string> why;
+  if (bar_exceeds_box) {
+    std::snprintf(part, sizeof part, "a bar sphere (radius %g) is larger than the box",
+                  rebar_rmax);
+    why.emplace_back(part);
+  }
+  if (s.isolated > 0) {
+    std::snprintf(part, sizeof part,
+                  "%lld had fewer than four neighbours within search %g (the search keyword "
+                  "widens it)",
+                  static_cast<long long>(s.isolated), search);
+    why.emplace_back(part);
+  }
+  const std::int64_t no_void = no_place - s.isolated;
+  if (no_void > 0) {
+    // Close radii: the largest at most 1.5 times the smallest accepted.
+    const bool close = rmax <= 1.5 * rmin;
+    std::snprintf(part, sizeof part,
+                  "%lld found no void with a radius in [%g, %g] (%sthe radius keyword widens "
+                  "the accepted range)",
+                  static_cast<long long>(no_void), rmin, rmax,
+                  close ? "in a dense packing of close radii few voids take even the smallest; "
+                        : "");
+    why.emplace_back(part);
+  }
+  for (std::size_t k = 0; k < why.size(); ++k) line += (k ? "; " : "") + why[k];
+  return line + "; unplaced keep leaves them in place\n";
+}
+
 }    // namespace
 
 std::array<double, kOutputSize> output_vector(const Totals &t)
@@ -423,9 +472,15 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
   largest = host.max(largest);
 
   Totals totals;
-  double unit = matrix_rmin;             // of the overlaps reported: the settings' rmin
+  const bool any_matrix = host.sum(matrix_count) > 0;
+  double unit = any_matrix ? matrix_rmin : 0;    // of the overlaps reported: the settings' rmin
   double accepted_rmax = matrix_rmax;    // the settings' rmax: the top of the accepted radii
-  if (host.sum(matrix_count) > 0) {      // else: no matrix sphere, nothing to relocate
+  double search = 0, rebar_rmax = 0;     // for the unplaced line
+  bool bar_exceeds_box = false;
+  if (!any_matrix)
+    host.warn("Fix reinforce/invert has no matrix sphere (an atom of the fix group outside the "
+              "rebar group): nothing to relocate");
+  if (any_matrix) {
     const Domain box = host.placement_domain();
     const double diagonal = norm(box.hi - box.lo);
     Settings settings;
@@ -487,7 +542,6 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
     // rebar rmax of it (owned or ghost). So both give the same targets, in
     // view order (tests: Invocation.HostListFindsTheSameTargets*, and
     // src_lammps_same_as_packaged_host_list against lmp_reinforce).
-    double rebar_rmax = 0;
     for (const Particle &p : view)
       if (p.role == Role::Rebar) rebar_rmax = std::max(rebar_rmax, p.r);
     const double contact = matrix_rmax + host.max(rebar_rmax);
@@ -510,8 +564,9 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
       overlapping = find_targets(view, settings.tol);
     }
     std::vector<std::size_t> found;
-    double target_rmin = INFINITY, target_rmax = 0;
+    double target_rmin = INFINITY, target_rmax = 0, left_alone = 0;
     for (std::size_t k : overlapping) {
+      if (is_left_alone(a, local[k])) left_alone += 1;
       if (!is_matrix(a, local[k])) continue;
       host.set_pending(local[k], true);
       found.push_back(k);
@@ -520,6 +575,16 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
     }
     target_rmin = -host.max(-target_rmin);
     target_rmax = host.max(target_rmax);
+    left_alone = host.sum(left_alone);
+    if (left_alone > 0)
+      host.log(format("fix reinforce/invert: left alone %.0f atoms that overlap the bars: they "
+                      "are rebar of ",
+                      left_alone) +
+               a.frozen_by + "\n");
+    rebar_rmax = host.max(rebar_rmax);
+    for (int d = 0; d < 3; ++d)
+      bar_exceeds_box = bar_exceeds_box || 2 * rebar_rmax > domain.hi[d] - domain.lo[d];
+    search = settings.search;
     const int classes = settings.size == SizeMode::Keep ? kSizeClasses : 1;
     const double class_width = (target_rmax - target_rmin) / classes;
     auto size_class = [&](double r) {
@@ -662,7 +727,8 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
   const std::vector<double> sums = reduce_all(
       host,
       {count(s.targets), count(s.relocated), count(s.unplaced), count(s.displaced), count(s.solves),
-       count(s.pushed), count(s.sweeps), s.volume_before, s.volume_after, s.volume_removed},
+       count(s.pushed), count(s.sweeps), s.volume_before, s.volume_after, s.volume_removed,
+       count(s.isolated)},
       false);
   s.targets = static_cast<std::int64_t>(sums[0]);
   s.relocated = static_cast<std::int64_t>(sums[1]);
@@ -674,6 +740,7 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
   s.volume_before = sums[7];
   s.volume_after = sums[8];
   s.volume_removed = sums[9];
+  s.isolated = static_cast<std::int64_t>(sums[10]);
   const std::vector<double> maxima =
       reduce_all(host, {s.max_overlap, s.max_kept_overlap, s.max_push}, true);
   s.max_overlap = maxima[0];
@@ -683,22 +750,10 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
   totals.kept = options.keep_unplaced ? static_cast<double>(s.unplaced) : 0;
   totals.seconds = host.max(host.wall_time() - start);
   host.log(summary_line(s, options.keep_unplaced, totals.seconds, totals.rounds, unit));
-  // Many targets that found no place: say why and what changes it. The beam
-  // packings (radius ratio 3) lose under 1 %; a narrow size law loses most,
-  // as few voids take even its smallest radius.
+  // Many targets that found no place: say why and what changes it.
   const std::int64_t no_place = s.unplaced - s.displaced;
-  if (!options.keep_unplaced && s.targets > 0 && no_place >= kManyUnplaced * s.targets) {
-    char line[400];
-    std::snprintf(
-        line, sizeof line,
-        "fix reinforce/invert: unplaced: %lld of %lld targets (%.0f%%) found no void with a "
-        "radius in [%g, %g] and were deleted (in a dense packing of close radii few "
-        "voids take even the smallest; the radius keyword widens the accepted range, "
-        "unplaced keep leaves them in place)\n",
-        static_cast<long long>(no_place), static_cast<long long>(s.targets),
-        100.0 * no_place / s.targets, unit, accepted_rmax);
-    host.log(line);
-  }
+  if (!options.keep_unplaced && s.targets > 0 && no_place >= kManyUnplaced * s.targets)
+    host.log(unplaced_line(s, no_place, unit, accepted_rmax, search, rebar_rmax, bar_exceeds_box));
   return totals;
 }
 

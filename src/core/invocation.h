@@ -22,6 +22,11 @@ struct AtomArrays {
   const int *mask = nullptr;
   const int *pending = nullptr;    // the fix's per-atom flag: 1 = target waiting for a place
   int group_bit = 0, rebar_bit = 0;
+  // Atoms this fix never moves, deletes or takes as targets, whatever its
+  // group: the rebar of the host's other reinforce/invert fixes (their
+  // group bits, ORed), named in `frozen_by` for the log ("fix ID", ...).
+  int frozen_bits = 0;
+  std::string frozen_by;
 };
 
 class HostHooks {
@@ -89,6 +94,9 @@ public:
   }
   virtual double wall_time() = 0;
   virtual void log(const std::string &line) = 0;
+  // One WARNING line (the host's own, printed once): the message without
+  // the "WARNING: " the host puts before it, without a newline.
+  virtual void warn(const std::string &message) = 0;
   virtual void fail(const std::string &message) = 0;    // does not return
 };
 

@@ -129,15 +129,6 @@ std::vector<double> pair_gaps(const std::vector<Candidate> &near, std::size_t n,
   return gap;
 }
 
-// Inside the walls (non-periodic dimensions) with radius r, and the
-// region, if any, holds the wrapped centre.
-bool admissible(Vec3 c, double r, const Domain &domain)
-{
-  for (int d = 0; d < 3; ++d)
-    if (!domain.periodic[d] && (c[d] - r < domain.lo[d] || c[d] + r > domain.hi[d])) return false;
-  return !domain.region || domain.region(wrapped_into_box(c, domain));
-}
-
 // The spheres a process sees while it relocates: the particles, then the
 // relocated spheres and their periodic images as they are added. Present
 // spheres can be pushed; every copy of an atom moves with it.
@@ -491,7 +482,7 @@ private:
       stats_.solves++;
       for (int k = 0; k < nfound; ++k) {
         const double shift = norm(found[k] - x0);
-        if (shift > max_shift || shift >= best.score || !admissible(found[k], r0, domain_) ||
+        if (shift > max_shift || shift >= best.score || !admissible(x0, found[k], r0, domain_, s_.tol) ||
             overlaps_one_of(near, found[k], r0))
           continue;
         double deepest;
@@ -515,7 +506,7 @@ private:
       return RadiusRange{std::max(s_.rmin, r0 - best.score), std::min(s_.rmax, r0 + best.score)};
     };
     for_each_solution(x0, r0, wanted, [&](const Sphere &sol) {
-      if (sol.r < s_.rmin || !admissible(sol.c, sol.r, domain_)) return false;
+      if (sol.r < s_.rmin || !admissible(x0, sol.c, sol.r, domain_, s_.tol)) return false;
       const double score = s_.choice == Choice::Closest ? std::fabs(sol.r - r0) : 0.0;
       double deepest;
       if (score >= best.score || !scene_.fits(sol.c, sol.r, s_.tol, deepest)) return false;
@@ -537,7 +528,7 @@ private:
     for_each_solution(
         x0, r0, [&]() { return radii; },
         [&](const Sphere &sol) {
-          if (!admissible(sol.c, std::min(sol.r, r0), domain_)) return false;
+          if (!admissible(x0, sol.c, std::min(sol.r, r0), domain_, s_.tol)) return false;
           const double score = s_.choice == Choice::Closest ? std::fabs(sol.r - r0) : order;
           if (voids.size() == kMaxAttempts && score >= voids.back().score) return false;
           for (const Void &v : voids)
@@ -575,13 +566,14 @@ private:
       auto it = start.find(j);
       return it == start.end() ? scene_.x(j) : it->second;
     };
-    // With a region, only spheres inside it are pushed, and they stay in it.
-    auto in_region = [&](Vec3 x) {
-      return !domain_.region || domain_.region(wrapped_into_box(x, domain_));
+    // With a region, only spheres wholly inside it are pushed (and they
+    // must end inside it: admissible below).
+    auto in_region = [&](Vec3 x, double r) {
+      return !domain_.region || domain_.region(wrapped_into_box(x, domain_), r * (1 - s_.tol));
     };
     auto movable = [&](int j) {
-      return j == fresh ||
-             (scene_.pushable(j) && norm(origin(j) - c) <= reach && in_region(origin(j)));
+      return j == fresh || (scene_.pushable(j) && norm(origin(j) - c) <= reach &&
+                            in_region(origin(j), scene_.r(j)));
     };
     auto shift = [&](int j, Vec3 dx) {
       for (int k : scene_.copies(scene_.id(j)))
@@ -655,12 +647,12 @@ private:
     }
     stats_.sweeps += sweep + 1;
     const Vec3 final_c = scene_.x(fresh);
-    if (norm(final_c - x0) > r0 + s_.search || !admissible(final_c, r0, domain_)) return undo();
+    if (norm(final_c - x0) > r0 + s_.search || !admissible(x0, final_c, r0, domain_, s_.tol))
+      return undo();
+    // Every pushed sphere inside the region and clear of the walls, from
+    // where it started.
     for (const auto &[k, before] : start)
-      if (!in_region(scene_.x(k))) {
-        (void)before;
-        return undo();
-      }
+      if (!admissible(before, scene_.x(k), scene_.r(k), domain_, s_.tol)) return undo();
     // Accepted: what moved is checked once more at the end, and the pushes.
     for (const auto &entry : start) touched.push_back(entry.first);
     for (const auto &[mid, dx] : moved) {
@@ -702,6 +694,7 @@ void Stats::add(const Stats &o)
   pushed += o.pushed;
   max_push = std::max(max_push, o.max_push);
   sweeps += o.sweeps;
+  isolated += o.isolated;
 }
 
 Footprint footprint(const Settings &s, double target_rmax, double largest_r)
@@ -756,6 +749,17 @@ std::vector<Vec3> images_in_view(Vec3 c, const Domain &domain, bool with_centre)
 bool spheres_overlap(Vec3 a, double ra, Vec3 b, double rb, double tol)
 {
   return ra + rb - norm(a - b) > tol * std::min(ra, rb);
+}
+
+bool admissible(Vec3 from, Vec3 c, double r, const Domain &domain, double tol)
+{
+  if (!is_finite(c) || !std::isfinite(r)) return false;
+  // The box faces as before: a new sphere wholly inside them.
+  for (int d = 0; d < 3; ++d)
+    if (!domain.periodic[d] && (c[d] - r < domain.lo[d] || c[d] + r > domain.hi[d])) return false;
+  const double inner = r * (1 - tol);
+  if (domain.region && !domain.region(wrapped_into_box(c, domain), inner)) return false;
+  return !domain.walls || domain.walls->admits(from, c, r, tol);
 }
 
 std::vector<int> spheres_near_rebar(int n, const double *const *x, const double *radius,
@@ -847,6 +851,7 @@ std::int64_t count_packing_overlaps(const std::vector<Particle> &particles, doub
       // Once per pair: an owned partner by index, a ghost by id (its owner
       // counts the pair when its id is the lower one); never an image of p.
       if (q.id == p.id || (q.owned ? j <= static_cast<int>(i) : q.id < p.id)) return;
+      if (p.other_rebar || q.other_rebar) return;
       const double overlap = p.r + q.r - norm(p.x - q.x);
       if (overlap > tol * std::min(p.r, q.r)) {
         ++pairs;
@@ -953,6 +958,10 @@ Relocation relocate_targets(const std::vector<Particle> &all, const Settings &se
       stats.volume_after += ball_volume(scene.r(fresh));
     } else {
       stats.unplaced++;
+      // Why, for the log: no group of four spheres to be tangent to at all.
+      if (result.outcome == Outcome::Unplaced &&
+          scene.candidates(target.x, target.r, settings.search, 4, kMaxRebarCandidates).size() < 4)
+        stats.isolated++;
       if (keep_unplaced && result.outcome == Outcome::Unplaced) {
         // Present from now on, never pushed; what it overlaps is reported.
         for (int copy : vacant[target.id]) scene.set_present(copy, false);

@@ -4,10 +4,12 @@
 // (docs/design.md, "The relocation engine").
 #pragma once
 
+#include "boundaries.h"
 #include "vec3.h"
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace reinforce {
@@ -29,6 +31,9 @@ struct Particle {
   // A present matrix sphere that rearrangement may push: in the fix group,
   // not a kept target. Atoms outside the fix group are obstacles only.
   bool pushable = true;
+  // In the rebar of another reinforce/invert fix: an obstacle that never
+  // moves, not a bar of this one; its overlaps are not the packing's.
+  bool other_rebar = false;
 };
 
 enum class Choice { First, Closest };
@@ -61,9 +66,20 @@ struct Domain {
   // ghost cutoff): a periodic image of a new sphere is added to the view
   // when its centre falls inside, as the host's own ghost images would be.
   Vec3 view_lo, view_hi;
-  Vec3 sub_lo, sub_hi;                         // this process's subdomain, [sub_lo, sub_hi)
-  std::function<bool(const Vec3 &)> region;    // optional extra test on a new (wrapped) centre
+  Vec3 sub_lo, sub_hi;    // this process's subdomain, [sub_lo, sub_hi)
+  // Optional: true when the sphere of radius r about c (wrapped into the
+  // box) lies wholly inside the user's region (the region's own surface
+  // distance, as the host's region walls use it).
+  std::function<bool(const Vec3 &c, double r)> region;
+  // Optional: the walls of the host's wall fixes, which no placed or pushed
+  // sphere may cross or overlap (the same for every process).
+  std::shared_ptr<const Boundaries> walls;
 };
+
+// True when a sphere of radius r moved from `from` to c is inside the box
+// in its non-periodic dimensions, inside the region and clear of the
+// walls, each up to tol * r.
+bool admissible(Vec3 from, Vec3 c, double r, const Domain &domain, double tol);
 
 // How far the relocation of one target reaches from the target's old centre:
 // `write` bounds the centres of the spheres it moves or places (before and
@@ -86,6 +102,7 @@ struct Stats {
   std::int64_t pushed = 0;        // spheres pushed (counted once per target that pushed them)
   double max_push = 0;            // largest displacement of a pushed sphere in one call, / rmin
   std::int64_t sweeps = 0;        // rearrangement sweeps
+  std::int64_t isolated = 0;      // unplaced with fewer than four spheres within `search`
   void add(const Stats &o);
 };
 

@@ -83,6 +83,13 @@ struct CommAccess : Comm {
   static int border_group_of(const Comm *c) { return c->*(&CommAccess::bordergroup); }
 };
 
+std::string format_count(double v)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%.0f", v);
+  return text;
+}
+
 std::string format_length(double v)
 {
   char text[32];
@@ -150,6 +157,8 @@ public:
     a.pending = f.pending.data();
     a.group_bit = f.groupbit;
     a.rebar_bit = f.rebar_bit;
+    a.frozen_bits = frozen_bits;
+    a.frozen_by = frozen_by;
     return a;
   }
 
@@ -274,8 +283,13 @@ public:
       d.sub_lo[k] = f.domain->sublo[k];
       d.sub_hi[k] = f.domain->subhi[k];
     }
+    // The whole sphere inside: its centre matches and no surface of the
+    // region lies within r of it (Region::surface, as fix wall/region
+    // finds its contacts; for side out it measures to the excluded body).
     if (Region *region = f.region)
-      d.region = [region](const reinforce::Vec3 &x) { return region->match(x.x, x.y, x.z) != 0; };
+      d.region = [region](const reinforce::Vec3 &x, double r) {
+        return region->match(x.x, x.y, x.z) != 0 && region->surface(x.x, x.y, x.z, r) == 0;
+      };
     return d;
   }
 
@@ -291,6 +305,8 @@ public:
     atom->radius[i] = r;
     atom->rmass[i] *= scale * scale * scale;    // the material density is kept
     f.pending[i] = kPresent;
+    for (auto &[ifix, count] : f.anchored)
+      if (atom->mask[i] & f.modify->fix[ifix]->groupbit) count += 1;
   }
 
 #if REINFORCE_LAMMPS_SOURCE_BUILD
@@ -358,6 +374,14 @@ public:
   {
     if (f.comm->me == 0) utils::logmesg(f.lmp, line);
   }
+
+  void warn(const std::string &message) override
+  {
+    if (f.comm->me == 0) f.error->warning(FLERR, message);
+  }
+
+  int frozen_bits = 0;
+  std::string frozen_by;
 
   void fail(const std::string &message) override
   {
@@ -510,6 +534,53 @@ void FixReinforceInvert::check_rigid_bodies()
   }
 }
 
+// True when an atom of `other`'s group is a matrix atom of this fix (fix
+// group, not rebar), on any process. Collective.
+bool FixReinforceInvert::shares_matrix_atoms(const Fix *other)
+{
+  int mine = 0, any = 0;
+  for (int i = 0; i < atom->nlocal && !mine; ++i)
+    mine = (atom->mask[i] & groupbit) && !(atom->mask[i] & rebar_bit) &&
+           (atom->mask[i] & other->groupbit);
+  MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+  return any != 0;
+}
+
+// A wall fix keeps its geometry in protected members (and Debian's LAMMPS
+// ships no header of any wall fix): the fix cannot see it, so a relocated
+// sphere could be put through the wall and lost in the next run. Unless
+// the user gives a region that holds the matrix, or accepts the risk, the
+// run stops here. fix wall/flow makes no wall. Collective.
+void FixReinforceInvert::check_walls()
+{
+  if (options.walls_ignore || region) return;
+  for (int ifix = 0; ifix < modify->nfix; ++ifix) {
+    const Fix *other = modify->fix[ifix];
+    if (std::strncmp(other->style, "wall/", 5) != 0 || std::strcmp(other->style, "wall/flow") == 0)
+      continue;
+    if (shares_matrix_atoms(other))
+      stop(FLERR, std::string("Fix reinforce/invert cannot see the walls of fix ") + other->id +
+                      " (" + other->style +
+                      "): give a region that holds the matrix (region keyword: whole spheres "
+                      "are kept inside it) or walls ignore");
+  }
+}
+
+// The rebar of the other reinforce/invert fixes: never moved by this one.
+void FixReinforceInvert::find_other_rebar(int &bits, std::string &names)
+{
+  bits = 0;
+  names.clear();
+  int count = 0;
+  for (int ifix = 0; ifix < modify->nfix; ++ifix) {
+    const auto *other = dynamic_cast<const FixReinforceInvert *>(modify->fix[ifix]);
+    if (!other || other == this || other->rebar_bit == rebar_bit) continue;
+    bits |= other->rebar_bit;
+    names += (count++ ? ", " : "") + std::string(other->id);
+  }
+  if (count) names = (count > 1 ? "fixes " : "fix ") + names;
+}
+
 /* ---------------------------------------------------------------------- */
 
 void FixReinforceInvert::init()
@@ -608,10 +679,32 @@ void FixReinforceInvert::setup_pre_exchange()
   // write_restart and write_data also call setup_pre_exchange (whichflag 0):
   // only a run or a minimization relocates.
   if (update->whichflag == 0 || done()) return;
+  setup_seen = true;
   if (options.every > 0) next_reneighbor = (update->ntimestep / options.every + 1) * options.every;
   if (invoked) return;
   invoked = true;
   invoke();
+}
+
+// A run with "pre no" skips setup_pre_exchange (and init), but LAMMPS
+// still calls setup() of every fix: the fix says it did not relocate.
+void FixReinforceInvert::setup(int /*vflag*/)
+{
+  warn_if_not_relocated();
+}
+
+void FixReinforceInvert::min_setup(int /*vflag*/)
+{
+  warn_if_not_relocated();
+}
+
+void FixReinforceInvert::warn_if_not_relocated()
+{
+  if (!invoked && !setup_seen && comm->me == 0)
+    error->warning(FLERR, std::string("Fix reinforce/invert did not relocate: the setup of this "
+                                      "run was skipped (run pre no); it relocates at the setup "
+                                      "of a run with pre yes"));
+  setup_seen = false;
 }
 
 void FixReinforceInvert::pre_exchange()
@@ -629,9 +722,21 @@ void FixReinforceInvert::invoke()
   std::fill(pending.begin(), pending.end(), kPresent);
   if (region) region->prematch();
   check_rigid_bodies();
+  check_walls();
 
   Host host(*this);
+  find_other_rebar(host.frozen_bits, host.frozen_by);
+  anchored.clear();
+  for (int ifix = 0; ifix < modify->nfix; ++ifix)
+    if (std::strcmp(modify->fix[ifix]->style, "spring/self") == 0) anchored.emplace_back(ifix, 0.0);
   const reinforce::Totals t = reinforce::run_invocation(host, options);
+  for (const auto &[ifix, count] : anchored) {
+    const double moved = host.sum(count);
+    if (moved > 0 && comm->me == 0)
+      error->warning(FLERR, "Fix reinforce/invert moved " + format_count(moved) +
+                                " atoms held by fix " + modify->fix[ifix]->id +
+                                " (spring/self): their anchors are still the old positions");
+  }
 
   // Atoms marked in the last round are deleted by one more refresh. Then, as
   // delete_atoms does, the global count and the map of atom IDs. natoms is

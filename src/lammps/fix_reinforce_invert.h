@@ -53,6 +53,8 @@ public:
   int setmask() override;
   void init() override;
   void setup_pre_exchange() override;
+  void setup(int) override;
+  void min_setup(int) override;
 #if REINFORCE_LAMMPS_SOURCE_BUILD
   void init_list(int, class NeighList *) override;
 #endif
@@ -80,6 +82,10 @@ private:
   class Region *region = nullptr;
   std::vector<int> pending;
   bool invoked = false;               // the relocation at the start of the first run is done
+  bool setup_seen = false;            // setup_pre_exchange ran in this run's setup
+  // Atoms moved by the latest invocation in the group of each fix that
+  // anchors per-atom positions (spring/self), by fix index.
+  std::vector<std::pair<int, double>> anchored;
   class NeighList *list = nullptr;    // source-built: the host's occasional full list
   std::vector<double> totals;         // f_ID[1..], the latest invocation
 #if REINFORCE_LAMMPS_SOURCE_BUILD
@@ -99,6 +105,10 @@ private:
   void check_styles();
   void find_groups_and_region();
   void check_rigid_bodies();
+  void check_walls();
+  bool shares_matrix_atoms(const class Fix *other);
+  void find_other_rebar(int &bits, std::string &names);
+  void warn_if_not_relocated();
   void invoke();
 };
 
