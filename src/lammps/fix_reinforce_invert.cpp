@@ -10,7 +10,8 @@
 //     atoms moved out of the box (packaged: no atom_vec.h);
 //  2. the host's occasional neighbour list (source-built: neigh_request.h);
 //  3. renamed API: Comm::forward_comm(Fix *) and Domain::get_region_by_id
-//     (current LAMMPS) against forward_comm_fix and find_region (2021).
+//     (current LAMMPS) against forward_comm_fix and find_region (2021);
+//     NeighRequest::set_cutoff_fixed (since August 2026) against set_cutoff.
 
 #include "fix_reinforce_invert.h"
 
@@ -96,6 +97,22 @@ std::string format_length(double v)
   std::snprintf(text, sizeof text, "%.6g", v);
   return text;
 }
+
+#if REINFORCE_LAMMPS_SOURCE_BUILD
+// [3] One cutoff for every type pair: NeighRequest::set_cutoff_fixed since
+// LAMMPS's August 2026 feature release, set_cutoff before it. The overload
+// taking int is chosen where the newer name exists.
+template <class Request>
+auto set_fixed_cutoff(Request *request, double cutoff, int)
+    -> decltype(request->set_cutoff_fixed(cutoff), void())
+{
+  request->set_cutoff_fixed(cutoff);
+}
+template <class Request> void set_fixed_cutoff(Request *request, double cutoff, long)
+{
+  request->set_cutoff(cutoff);
+}
+#endif
 
 Region *find_region(Domain *domain, const std::string &name)
 {
@@ -661,8 +678,8 @@ void FixReinforceInvert::request_neighbour_list()
     list = kept;
     list_why.clear();
     list_cutoff = cutoff;
-    neighbor->add_request(this, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL)
-        ->set_cutoff(list_cutoff);
+    set_fixed_cutoff(neighbor->add_request(this, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL),
+                     list_cutoff, 0);
   }
 }
 
