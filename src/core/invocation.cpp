@@ -1,6 +1,7 @@
 #include "invocation.h"
 
 #include "cell_grid.h"
+#include "round_records.h"
 #include "schedule.h"
 
 #include <algorithm>
@@ -82,15 +83,12 @@ std::string format(const char *fmt, double a, double b = 0)
 }
 
 // Every round's results go to the partner processes (exchange_partners: all
-// that can see or own an atom they change) by atom ID as [id, what, x, y,
-// z, r] records, what = 0 placed (x: new centre, in the frame of the
-// target's in-box copy), 1 deleted, 2 kept, 3 pushed (x: the displacement).
-// The owner of an atom applies them to the host's atom; each partner
-// applies them to its view, so that the next round needs no migration and
-// no new ghosts from the host. The records of one round touch each atom
-// once at most (the blocks of a round are independent), so a process may
-// apply its own records and the others' in either order.
-constexpr int kRecord = 6;
+// that can see or own an atom they change) as records by atom ID
+// (round_records.h). The owner of an atom applies them to the host's atom;
+// each partner applies them to its view, so that the next round needs no
+// migration and no new ghosts from the host. The records of one round touch
+// each atom once at most (the blocks of a round are independent), so a
+// process may apply its own records and the others' in either order.
 // The share of targets deleted for want of a void above which the log says
 // why (docs/fix_reinforce_invert.rst, "Output").
 constexpr double kManyUnplaced = 0.1;
@@ -101,17 +99,6 @@ constexpr double kManyUnplaced = 0.1;
 // scenes' shell ratios of 4 within their standard error and let the small
 // beam run 1.73 times faster on 2 processes (4: 1.68; docs/design.md).
 constexpr int kSizeClasses = 3;
-// This process's records of one relocation, appended to `records`.
-void append_records(const Relocation &rel, bool keep_unplaced, std::vector<double> &records)
-{
-  for (const TargetResult &t : rel.targets) {
-    const double what = t.outcome == Outcome::Placed ? 0 : (keep_unplaced ? 2 : 1);
-    records.insert(records.end(), {static_cast<double>(t.id), what, t.x.x, t.x.y, t.x.z, t.r});
-  }
-  for (const Push &p : rel.pushes)
-    records.insert(records.end(), {static_cast<double>(p.id), 3, p.dx.x, p.dx.y, p.dx.z, 0});
-}
-
 // Element-wise sum (or max) over the processes of vectors of one length, by
 // one gather: one collective instead of one per element.
 std::vector<double> reduce_all(HostHooks &host, const std::vector<double> &mine, bool take_max)
@@ -130,22 +117,19 @@ std::vector<double> reduce_all(HostHooks &host, const std::vector<double> &mine,
 // by the caller after the last round, so local indices stay valid).
 void apply_to_host(HostHooks &host, const AtomArrays &a,
                    const std::unordered_map<std::int64_t, int> &owned,
-                   const std::vector<double> &all, std::vector<int> &doomed)
+                   const std::vector<RoundRecord> &records, std::vector<int> &doomed)
 {
-  for (std::size_t k = 0; k + kRecord <= all.size(); k += kRecord) {
-    auto it = owned.find(static_cast<std::int64_t>(all[k]));
+  for (const RoundRecord &rec : records) {
+    auto it = owned.find(rec.id);
     if (it == owned.end()) continue;
     const int i = it->second;
-    const int what = static_cast<int>(all[k + 1]);
-    const Vec3 v{all[k + 2], all[k + 3], all[k + 4]};
-    if (what == 0) {
-      host.move(i, v, all[k + 5]);
-    } else if (what == 1) {
-      doomed.push_back(i);
-    } else if (what == 2) {
-      host.set_pending(i, false);
-    } else {
-      host.move(i, Vec3{a.x[i][0], a.x[i][1], a.x[i][2]} + v, a.radius[i]);
+    switch (rec.kind) {
+    case RecordKind::Placed: host.move(i, rec.v, rec.r); break;
+    case RecordKind::Deleted: doomed.push_back(i); break;
+    case RecordKind::Kept: host.set_pending(i, false); break;
+    case RecordKind::Pushed:
+      host.move(i, Vec3{a.x[i][0], a.x[i][1], a.x[i][2]} + rec.v, a.radius[i]);
+      break;
     }
   }
 }
@@ -212,19 +196,19 @@ public:
       if (near_[k] >> round & 1) out.push_back(view_[k]);
   }
 
-  void apply(const std::vector<double> &records, const Domain &domain)
+  void apply(const std::vector<RoundRecord> &records, const Domain &domain)
   {
     std::vector<std::size_t> copies;
-    for (std::size_t k = 0; k + kRecord <= records.size(); k += kRecord) {
-      const std::int64_t id = static_cast<std::int64_t>(records[k]);
-      const int what = static_cast<int>(records[k + 1]);
-      const Vec3 v{records[k + 2], records[k + 3], records[k + 4]};
+    for (const RoundRecord &rec : records) {
+      const std::int64_t id = rec.id;
+      const RecordKind what = rec.kind;
+      const Vec3 v = rec.v;
       copies_of(id, copies);
-      if (what == 2) {
+      if (what == RecordKind::Kept) {
         for (std::size_t c : copies) view_[c].role = Role::Matrix;
         continue;
       }
-      if (copies.empty() && what != 0) continue;    // neither seen nor to be seen here
+      if (copies.empty() && what != RecordKind::Placed) continue;    // neither seen nor to be seen here
       Particle moved;
       if (!copies.empty()) moved = view_[copies.front()];
       // The in-box copy, if this process has it, is where a push starts.
@@ -234,11 +218,11 @@ public:
         gone_[c] = true;
         near_[c] = 0;
       }
-      if (what == 1) continue;
-      if (what == 0) {
+      if (what == RecordKind::Deleted) continue;
+      if (what == RecordKind::Placed) {
         moved.id = id;
         moved.x = v;
-        moved.r = records[k + 5];
+        moved.r = rec.r;
         moved.role = Role::Matrix;
         moved.pushable = true;    // a target is a matrix atom of the fix group
         if (copies.empty()) moved.owned = false;
@@ -657,7 +641,7 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
     LiveView live(std::move(view), rounds_near);
     std::vector<Particle> round_view;
     auto relocate_part = [&](int round, const std::vector<BlockKey> &waiting, bool waits,
-                             std::vector<double> &records) {
+                             std::vector<RoundRecord> &records) {
       auto picked = [&](const Particle &p) {
         if (round_of(p) != round) return false;
         const BlockKey key = block_key(lattice, round, p.x);
@@ -667,10 +651,13 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
       const Relocation rel = relocate_targets(round_view, settings, domain, options.keep_unplaced,
                                               totals.stats, picked);
       work[round] += static_cast<double>(rel.targets.size());
-      append_records(rel, options.keep_unplaced, records);
+      const std::vector<RoundRecord> mine = records_of(rel, options.keep_unplaced);
+      records.insert(records.end(), mine.begin(), mine.end());
     };
     auto collect = [&]() {
-      const std::vector<double> others = host.collect_results(partners);
+      std::vector<RoundRecord> others;
+      if (!decode_records(host.collect_results(partners), others))
+        host.fail("Fix reinforce/invert: internal error: malformed round results");
       apply_to_host(host, a, owned, others, doomed);
       live.apply(others, domain);
     };
@@ -685,14 +672,16 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
       for (auto it = first; it != last; ++it)
         if (previous >= 0 && touches(lattice, box, *it, previous, other_blocks))
           waiting.push_back(*it);
-      std::vector<double> records;
+      std::vector<RoundRecord> records;
       if (static_cast<std::size_t>(last - first) > waiting.size())
         relocate_part(r, waiting, false, records);
       if (previous >= 0) collect();
       if (!waiting.empty()) relocate_part(r, waiting, true, records);
       apply_to_host(host, a, owned, records, doomed);
       live.apply(records, domain);
-      host.post_results(records, partners);
+      std::vector<double> encoded;
+      encode_records(records, encoded);
+      host.post_results(encoded, partners);
       previous = r;
     }
     if (previous >= 0) {

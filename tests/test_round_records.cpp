@@ -1,0 +1,87 @@
+// The records a round's results travel as between processes.
+#include "round_records.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace reinforce;
+
+// Every kind, and IDs a double cannot hold (above 2^53, negative, the
+// extremes of 64 bits), come back exactly.
+TEST(RoundRecords, EncodeDecodeIsExact)
+{
+  const std::int64_t big = (std::int64_t{1} << 53) + 1;
+  const std::vector<RoundRecord> in = {
+      {1, RecordKind::Placed, {0.1, -2.5e-300, 3e300}, 0.004},
+      {big, RecordKind::Deleted, {}, 0},
+      {std::numeric_limits<std::int64_t>::max(), RecordKind::Kept, {}, 0},
+      {std::numeric_limits<std::int64_t>::min(), RecordKind::Pushed, {1e-17, 0, -1}, 0},
+      {-7, RecordKind::Placed, {1, 2, 3}, 5}};
+  std::vector<double> flat;
+  encode_records(in, flat);
+  ASSERT_EQ(flat.size(), in.size() * kRecordDoubles);
+  for (double v : flat) EXPECT_TRUE(std::isfinite(v));
+  std::vector<RoundRecord> out;
+  ASSERT_TRUE(decode_records(flat, out));
+  ASSERT_EQ(out.size(), in.size());
+  for (std::size_t k = 0; k < in.size(); ++k) {
+    EXPECT_EQ(out[k].id, in[k].id);
+    EXPECT_EQ(out[k].kind, in[k].kind);
+    EXPECT_EQ(out[k].v.x, in[k].v.x);
+    EXPECT_EQ(out[k].v.y, in[k].v.y);
+    EXPECT_EQ(out[k].v.z, in[k].v.z);
+    EXPECT_EQ(out[k].r, in[k].r);
+  }
+  // An empty round is an empty buffer.
+  std::vector<double> none;
+  encode_records({}, none);
+  EXPECT_TRUE(none.empty());
+  EXPECT_TRUE(decode_records(none, out));
+  EXPECT_TRUE(out.empty());
+}
+
+// A buffer that is not whole records, or has an unknown kind, is refused.
+TEST(RoundRecords, MalformedBuffersAreRefused)
+{
+  std::vector<double> flat;
+  encode_records({{3, RecordKind::Pushed, {1, 1, 1}, 0}}, flat);
+  std::vector<RoundRecord> out;
+  std::vector<double> short_buffer(flat.begin(), flat.end() - 1);
+  EXPECT_FALSE(decode_records(short_buffer, out));
+  for (double kind : {-1.0, 4.0, 1.5, static_cast<double>(NAN)}) {
+    std::vector<double> bad = flat;
+    bad[2] = kind;
+    EXPECT_FALSE(decode_records(bad, out)) << kind;
+  }
+  // ID halves that are not whole numbers below 2^32.
+  for (double half : {-1.0, 4294967296.0, 0.5, static_cast<double>(NAN), static_cast<double>(INFINITY)}) {
+    std::vector<double> bad = flat;
+    bad[0] = half;
+    EXPECT_FALSE(decode_records(bad, out)) << half;
+    bad = flat;
+    bad[1] = half;
+    EXPECT_FALSE(decode_records(bad, out)) << half;
+  }
+}
+
+// What a relocation gives becomes one record per target, then its pushes.
+TEST(RoundRecords, RecordsOfARelocation)
+{
+  Relocation rel;
+  rel.targets.push_back({0, 10, Outcome::Placed, {1, 2, 3}, 0.5});
+  rel.targets.push_back({1, 11, Outcome::Unplaced, {}, 0});
+  rel.targets.push_back({2, 12, Outcome::Displaced, {}, 0});
+  rel.pushes.push_back({20, {0.1, 0, 0}});
+  const std::vector<RoundRecord> deleted = records_of(rel, false);
+  ASSERT_EQ(deleted.size(), 4u);
+  EXPECT_EQ(deleted[0].kind, RecordKind::Placed);
+  EXPECT_EQ(deleted[0].r, 0.5);
+  EXPECT_EQ(deleted[1].kind, RecordKind::Deleted);
+  EXPECT_EQ(deleted[2].kind, RecordKind::Deleted);
+  EXPECT_EQ(deleted[3].kind, RecordKind::Pushed);
+  EXPECT_EQ(deleted[3].id, 20);
+  const std::vector<RoundRecord> kept = records_of(rel, true);
+  EXPECT_EQ(kept[1].kind, RecordKind::Kept);
+}
