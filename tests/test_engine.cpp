@@ -631,6 +631,34 @@ TEST(CellGrid, QueriesMatchBruteForce)
       }
     }
   }
-  EXPECT_THROW(CellGrid(0.0), std::invalid_argument);
-  EXPECT_THROW(CellGrid(NAN), std::invalid_argument);
+}
+
+// No cell size, point or range makes the grid throw, overflow or miss an
+// item: a size that is not positive and finite gives one cell; a query box
+// over more cells than the grid holds (a huge or infinite range, points
+// far out) visits every cell once.
+TEST(CellGrid, DegenerateSizesPointsAndRangesMissNothing)
+{
+  const std::vector<Vec3> x = {{0, 0, 0}, {1, 2, 3}, {-5, 1e6, 0.5}, {1e300, -1e300, 0}};
+  auto found = [&](const CellGrid &g, Vec3 c, double range) {
+    std::vector<int> seen(x.size(), 0);
+    g.for_each_near(c, range, [&](int i) { ++seen[i]; });
+    return seen;
+  };
+  for (double size : {0.0, -1.0, static_cast<double>(NAN), static_cast<double>(INFINITY), 1e-320}) {
+    CellGrid g(size);
+    for (std::size_t i = 0; i < x.size(); ++i) g.insert(x[i], static_cast<int>(i));
+    for (int s : found(g, {0, 0, 0}, 0.1)) EXPECT_EQ(s, 1) << size;
+  }
+  CellGrid g(0.5);
+  for (std::size_t i = 0; i < x.size(); ++i) g.insert(x[i], static_cast<int>(i));
+  for (double range : {1e305, static_cast<double>(INFINITY), static_cast<double>(NAN)})
+    for (int s : found(g, {0, 0, 0}, range)) EXPECT_EQ(s, 1) << range;
+  // A point far out (its cell clamped) is found near itself.
+  EXPECT_EQ(found(g, {1e300, -1e300, 0}, 1.0)[3], 1);
+  // A NaN point names some cell (callers test exact distances, which a
+  // NaN fails): no crash, no item twice.
+  for (int s : found(g, {static_cast<double>(NAN), 0, 0}, 1.0)) EXPECT_LE(s, 1);
+  g.erase(x[3], 3);
+  EXPECT_EQ(found(g, {0, 0, 0}, static_cast<double>(INFINITY))[3], 0);
 }

@@ -39,6 +39,7 @@ TEST(FixOptions, Defaults)
   EXPECT_EQ(o.polish, 1);
   EXPECT_EQ(o.size, SizeMode::Keep);
   EXPECT_FALSE(o.displaced_set);
+  EXPECT_FALSE(o.walls_ignore);    // the host's walls are checked
   const Settings s = make_settings(o, 0.1, 0.3, 100);
   EXPECT_EQ(s.rmin, 0.1);
   EXPECT_EQ(s.rmax, 0.3);
@@ -153,6 +154,69 @@ TEST(FixOptions, ErrorsNameTheProblem)
             I + "displaced must be in (0, 1] or 'none'");
   EXPECT_EQ(error_of({"0", "bars", "polish", "11"}), I + "polish must be in 0..10");
   EXPECT_EQ(error_of({"0", "bars", "region"}), I + "missing value for keyword 'region'");
+}
+
+// walls check|ignore: whether the host's wall fixes are read (check, the
+// default) or not (ignore); the last one given wins, in any place among the
+// other keywords, which it leaves as they were.
+TEST(FixOptions, WallsCheckOrIgnore)
+{
+  EXPECT_FALSE(parse_fix_arguments({"0", "bars", "walls", "check"}).walls_ignore);
+  EXPECT_TRUE(parse_fix_arguments({"0", "bars", "walls", "ignore"}).walls_ignore);
+  EXPECT_FALSE(
+      parse_fix_arguments({"0", "bars", "walls", "ignore", "walls", "check"}).walls_ignore);
+  EXPECT_TRUE(parse_fix_arguments({"0", "bars", "walls", "check", "walls", "ignore"}).walls_ignore);
+  const FixOptions o = parse_fix_arguments(
+      {"5", "bars", "tol", "1e-9", "walls", "ignore", "unplaced", "keep", "radius", "0.2", "0.4"});
+  EXPECT_TRUE(o.walls_ignore);
+  EXPECT_EQ(o.every, 5);
+  EXPECT_EQ(o.tol, 1e-9);
+  EXPECT_TRUE(o.keep_unplaced);
+  EXPECT_TRUE(o.radius_set);
+  EXPECT_EQ(o.rmin, 0.2);
+  EXPECT_EQ(o.rmax, 0.4);
+  EXPECT_TRUE(
+      parse_fix_arguments({"0", "bars", "region", "inside", "walls", "ignore"}).walls_ignore);
+  EXPECT_EQ(parse_fix_arguments({"0", "bars", "region", "inside", "walls", "ignore"}).region,
+            "inside");
+  // The engine's settings do not depend on it.
+  const Settings a = make_settings(parse_fix_arguments({"0", "bars"}), 0.1, 0.3, 100);
+  const Settings b =
+      make_settings(parse_fix_arguments({"0", "bars", "walls", "ignore"}), 0.1, 0.3, 100);
+  EXPECT_EQ(a.rmin, b.rmin);
+  EXPECT_EQ(a.rmax, b.rmax);
+  EXPECT_EQ(a.search, b.search);
+  EXPECT_EQ(a.zone, b.zone);
+  EXPECT_EQ(a.tol, b.tol);
+}
+
+TEST(FixOptions, WallsErrorsNameTheProblem)
+{
+  const std::string I = "Illegal fix reinforce/invert command: ";
+  EXPECT_EQ(error_of({"0", "bars", "walls"}), I + "missing value for keyword 'walls'");
+  EXPECT_EQ(error_of({"0", "bars", "walls", "ignore", "walls"}),
+            I + "missing value for keyword 'walls'");
+  EXPECT_EQ(error_of({"0", "bars", "walls", "off"}),
+            I + "walls must be 'check' or 'ignore', got 'off'");
+  EXPECT_EQ(error_of({"0", "bars", "walls", "Ignore"}),    // case matters
+            I + "walls must be 'check' or 'ignore', got 'Ignore'");
+  EXPECT_EQ(error_of({"0", "bars", "walls", "CHECK"}),
+            I + "walls must be 'check' or 'ignore', got 'CHECK'");
+  EXPECT_EQ(error_of({"0", "bars", "walls", ""}), I + "walls must be 'check' or 'ignore', got ''");
+  EXPECT_EQ(error_of({"0", "bars", "walls", "ignore "}),
+            I + "walls must be 'check' or 'ignore', got 'ignore '");
+  EXPECT_EQ(error_of({"0", "bars", "walls", "1"}),
+            I + "walls must be 'check' or 'ignore', got '1'");
+  // A keyword where the value should be is not taken as one.
+  EXPECT_EQ(error_of({"0", "bars", "walls", "tol", "1e-6"}),
+            I + "walls must be 'check' or 'ignore', got 'tol'");
+  // The keyword itself is not a value of another keyword.
+  EXPECT_EQ(error_of({"0", "bars", "region", "walls", "ignore"}), I + "unknown keyword 'ignore'");
+  EXPECT_EQ(error_of({"0", "bars", "Walls", "ignore"}), I + "unknown keyword 'Walls'");
+  EXPECT_EQ(error_of({"0", "bars", "wall", "ignore"}), I + "unknown keyword 'wall'");
+  // An error after it is still reported.
+  EXPECT_EQ(error_of({"0", "bars", "walls", "ignore", "tries", "0"}), I + "tries must be > 0");
+  EXPECT_THROW(parse_fix_arguments({"0", "bars", "walls", "maybe"}), OptionError);
 }
 
 TEST(FixOptions, ImpossibleRadiusRangeFromScene)

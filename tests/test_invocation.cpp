@@ -667,11 +667,12 @@ TEST(Invocation, MovedSpheresStayClearOfTheWalls)
         int bad = 0;
         for (const Moved &m : moved_spheres(before, h))
           bad += !kinds[kind]->admits(m.from, m.to, m.r, 1e-6);
-        if (with_walls)
+        if (with_walls) {
           EXPECT_EQ(bad, 0) << "kind " << kind;
-        else
+          EXPECT_LE(worst_matrix_overlap(h), 1e-6);
+        } else {
           crossed_without = bad;
-        if (with_walls) EXPECT_LE(worst_matrix_overlap(h), 1e-6);
+        }
       }
       EXPECT_GT(crossed_without, 0) << "kind " << kind;
     }
@@ -695,10 +696,11 @@ TEST(Invocation, RegionHoldsWholeSpheres)
     ASSERT_GT(t.stats.relocated, 0);
     int out = 0;
     for (const Moved &m : moved_spheres(before, h)) out += m.to.z + m.r * (1 - 1e-6) > top;
-    if (with_region)
+    if (with_region) {
       EXPECT_EQ(out, 0);
-    else
+    } else {
       out_without = out;
+    }
   }
   EXPECT_GT(out_without, 0);
 }

@@ -12,19 +12,18 @@ bool finite(double v)
   return std::isfinite(v);
 }
 
+// v / |v|, scaled first by its largest component so that no square
+// overflows or underflows (lengths from 1e-300 to 1e300).
 Vec3 unit(Vec3 v)
 {
-  return (1 / norm(v)) * v;
+  const double m = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+  const Vec3 s = (1 / m) * v;
+  return (1 / norm(s)) * s;
 }
 
-// Distance from x to the segment [a, b] (a point when a == b).
-double distance_to_segment(Vec3 x, Vec3 a, Vec3 b)
+bool usable_direction(Vec3 v)
 {
-  const Vec3 ab = b - a;
-  const double len2 = norm2(ab);
-  double t = len2 > 0 ? dot(x - a, ab) / len2 : 0.0;
-  t = std::min(1.0, std::max(0.0, t));
-  return norm(x - (a + t * ab));
+  return is_finite(v) && (v.x != 0 || v.y != 0 || v.z != 0) && is_finite(unit(v));
 }
 
 // The part of v across the axis (unit).
@@ -42,59 +41,100 @@ double closest_approach(Vec3 p, Vec3 d)
   return norm(p + t * d);
 }
 
+// Triangles are measured in long double (x86-64: 64-bit mantissa, 15-bit
+// exponent): no square of a double overflows or underflows there, and the
+// normal of a sliver (height h, edges L) comes out to about 5e-20 L / h
+// instead of 1e-16 L / h.
+struct Wide {
+  long double x, y, z;
+  Wide(Vec3 v) : x(v.x), y(v.y), z(v.z) {}
+  Wide(long double a, long double b, long double c) : x(a), y(b), z(c) {}
+};
+Wide operator-(const Wide &a, const Wide &b)
+{
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+Wide operator+(const Wide &a, const Wide &b)
+{
+  return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+Wide operator*(long double s, const Wide &a)
+{
+  return {s * a.x, s * a.y, s * a.z};
+}
+long double dot(const Wide &a, const Wide &b)
+{
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+Wide cross(const Wide &a, const Wide &b)
+{
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+
+// Distance from x to the segment [a, b] (a point when a == b).
+long double wide_distance_to_segment(const Wide &x, const Wide &a, const Wide &b)
+{
+  const Wide ab = b - a;
+  const long double len2 = dot(ab, ab);
+  long double t = len2 > 0 ? dot(x - a, ab) / len2 : 0.0L;
+  t = std::min(1.0L, std::max(0.0L, t));
+  const Wide d = x - (a + t * ab);
+  return std::sqrt(dot(d, d));
+}
+
 }    // namespace
 
 double distance_to_triangle(Vec3 x, const Triangle &t)
 {
-  const Vec3 ab = t.b - t.a, ac = t.c - t.a;
-  const Vec3 n = cross(ab, ac);
-  const double area2 = norm2(n);
-  const double edges = std::max({norm2(ab), norm2(ac), norm2(t.c - t.b)});
-  const double to_edges = std::min({distance_to_segment(x, t.a, t.b),
-                                    distance_to_segment(x, t.b, t.c),
-                                    distance_to_segment(x, t.c, t.a)});
-  // A degenerate triangle (area below rounding of its edges) is its edges.
-  if (!(area2 > 1e-24 * edges * edges)) return to_edges;
-  // The foot of x in the plane lies inside: the distance to the plane;
-  // else the nearest point is on an edge.
-  const Vec3 ax = x - t.a;
-  const double height = dot(ax, n) / std::sqrt(area2);
-  const Vec3 foot = x - (height / std::sqrt(area2)) * n;
-  const double u = dot(cross(t.b - foot, t.c - foot), n), v = dot(cross(t.c - foot, t.a - foot), n),
-               w = dot(cross(t.a - foot, t.b - foot), n);
-  if (u >= 0 && v >= 0 && w >= 0) return std::min(std::fabs(height), to_edges);
-  return to_edges;
+  if (!is_finite(x) || !is_finite(t.a) || !is_finite(t.b) || !is_finite(t.c)) return NAN;
+  const Wide p(x), a(t.a), b(t.b), c(t.c);
+  // The nearest point of each edge; and where the foot of x in the plane
+  // lies inside, the distance to the plane (a triangle of no area: its
+  // edges).
+  long double best = std::min({wide_distance_to_segment(p, a, b), wide_distance_to_segment(p, b, c),
+                               wide_distance_to_segment(p, c, a)});
+  const Wide n = cross(b - a, c - a);
+  const long double n2 = dot(n, n);
+  if (n2 > 0) {
+    const long double height = dot(p - a, n) / std::sqrt(n2);
+    const Wide foot = p - (height / std::sqrt(n2)) * n;
+    if (dot(cross(b - foot, c - foot), n) >= 0 && dot(cross(c - foot, a - foot), n) >= 0 &&
+        dot(cross(a - foot, b - foot), n) >= 0)
+      best = std::min(best, std::fabs(height));
+  }
+  return static_cast<double>(best);
 }
 
 bool segment_meets_triangle(Vec3 p, Vec3 q, const Triangle &t)
 {
-  const Vec3 n = cross(t.b - t.a, t.c - t.a);
-  const double dp = dot(p - t.a, n), dq = dot(q - t.a, n);
+  if (!is_finite(p) || !is_finite(q) || !is_finite(t.a) || !is_finite(t.b) || !is_finite(t.c))
+    return false;
+  const Wide lp(p), lq(q), a(t.a), b(t.b), c(t.c);
+  const Wide n = cross(b - a, c - a);
+  const long double dp = dot(lp - a, n), dq = dot(lq - a, n);
   if ((dp > 0 && dq > 0) || (dp < 0 && dq < 0)) return false;
   // In the triangle's plane (or degenerate): a sphere sliding in the plane
   // of a wall is held by the distance test, not by a crossing.
   if (dp == dq) return false;
-  const double s = dp / (dp - dq);
-  const Vec3 hit = p + s * (q - p);
+  const long double s = dp / (dp - dq);
+  const Wide hit = lp + s * (lq - lp);
   // Inside the closed triangle, with room for rounding (a segment through
   // an edge shared by two triangles meets at least one of them).
-  const double n2 = norm2(n);
-  const double slack = -1e-12 * n2;
-  return dot(cross(t.b - hit, t.c - hit), n) >= slack && dot(cross(t.c - hit, t.a - hit), n) >= slack &&
-         dot(cross(t.a - hit, t.b - hit), n) >= slack;
+  const long double slack = -1e-12L * dot(n, n);
+  return dot(cross(b - hit, c - hit), n) >= slack && dot(cross(c - hit, a - hit), n) >= slack &&
+         dot(cross(a - hit, b - hit), n) >= slack;
 }
 
 bool Boundaries::add(const Plane &p)
 {
-  if (!is_finite(p.point) || !is_finite(p.normal) || !(norm(p.normal) > 0)) return false;
+  if (!is_finite(p.point) || !usable_direction(p.normal)) return false;
   planes_.push_back({p.point, unit(p.normal)});
   return true;
 }
 
 bool Boundaries::add(const Cylinder &c)
 {
-  if (!is_finite(c.point) || !is_finite(c.axis) || !(norm(c.axis) > 0) || !finite(c.radius) ||
-      !(c.radius > 0))
+  if (!is_finite(c.point) || !usable_direction(c.axis) || !finite(c.radius) || !(c.radius > 0))
     return false;
   cylinders_.push_back({c.point, unit(c.axis), c.radius});
   return true;
@@ -103,10 +143,11 @@ bool Boundaries::add(const Cylinder &c)
 bool Boundaries::add(const Triangle &t)
 {
   if (!is_finite(t.a) || !is_finite(t.b) || !is_finite(t.c)) return false;
+  const Vec3 centre = (1.0 / 3) * t.a + (1.0 / 3) * t.b + (1.0 / 3) * t.c;
+  const double radius = std::max({norm(t.a - centre), norm(t.b - centre), norm(t.c - centre)});
+  if (!is_finite(centre) || !finite(radius)) return false;    // beyond the range of doubles
   triangles_.push_back(t);
-  const Vec3 centre = (1.0 / 3) * (t.a + t.b + t.c);
-  bounds_.push_back(
-      {centre, std::max({norm(t.a - centre), norm(t.b - centre), norm(t.c - centre)})});
+  bounds_.push_back({centre, radius});
   indexed_ = false;
   return true;
 }
@@ -146,7 +187,8 @@ template <class F> void Boundaries::for_each_triangle_near(Vec3 x, double range,
 
 bool Boundaries::admits(Vec3 from, Vec3 c, double r, double tol) const
 {
-  if (!is_finite(c) || !is_finite(from) || !finite(r) || !(r >= 0)) return false;
+  if (!is_finite(c) || !is_finite(from) || !finite(r) || !(r >= 0) || !(tol >= 0 && tol < 1))
+    return false;
   const double clear = r * (1 - tol);
   for (const Plane &p : planes_) {
     const double before = dot(from - p.point, p.normal), after = dot(c - p.point, p.normal);
@@ -169,6 +211,7 @@ bool Boundaries::admits(Vec3 from, Vec3 c, double r, double tol) const
 
 double Boundaries::distance(Vec3 x) const
 {
+  if (!is_finite(x)) return NAN;
   double best = INFINITY;
   for (const Plane &p : planes_) best = std::min(best, std::fabs(dot(x - p.point, p.normal)));
   for (const Cylinder &y : cylinders_)

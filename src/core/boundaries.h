@@ -6,10 +6,13 @@
 // no surface by more than tol * r (its centre at least r (1 - tol) from the
 // surface) and its centre stays on the side of each surface where it
 // started: a wall holds the spheres on both of its sides, as a host's wall
-// does. Tolerance: the distances are exact up to the rounding of a few
-// products of coordinates (relative 1e-15 of the scene's size); a sphere
-// that exactly touches a surface is admitted. A non-finite centre or radius
-// is never admitted.
+// does. Tolerance: plane and cylinder distances are exact up to the
+// rounding of a few products of coordinates (relative 1e-15 of the
+// scene's size); triangle distances are computed in long double, within
+// 1e-12 of the scene plus 2e-18 L |x - a| / h for a triangle of longest
+// edge L and height h (a sliver's normal is ill-conditioned). A sphere that
+// exactly touches a surface is admitted. A non-finite centre, start, radius
+// or tol is never admitted.
 #pragma once
 
 #include "cell_grid.h"

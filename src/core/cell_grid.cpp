@@ -1,6 +1,5 @@
 #include "cell_grid.h"
 
-#include <stdexcept>
 
 namespace reinforce {
 
@@ -11,9 +10,10 @@ constexpr int kInitialBits = 6;
 CellGrid::CellGrid(double cell_size)
     : shift_(64 - kInitialBits), slot_cell_(std::size_t{1} << kInitialBits, -1)
 {
-  if (!(cell_size > 0) || !std::isfinite(cell_size))
-    throw std::invalid_argument("CellGrid: cell size must be positive and finite");
-  inv_cell_ = 1.0 / cell_size;
+  // A size that is not positive and finite (or so small that its inverse
+  // overflows) puts every item in one cell: queries stay right, only slower.
+  const double inverse = 1.0 / cell_size;
+  inv_cell_ = cell_size > 0 && std::isfinite(cell_size) && std::isfinite(inverse) ? inverse : 0.0;
 }
 
 // The cell of `key`, made empty if it was not there. The table is kept at

@@ -15,6 +15,8 @@ namespace reinforce {
 
 class CellGrid {
 public:
+  // Any cell_size is accepted: one that is not positive and finite gives
+  // a grid of one cell (correct, slow).
   explicit CellGrid(double cell_size);
 
   void insert(Vec3 x, int item);
@@ -31,9 +33,18 @@ public:
   template <class F> void for_each_near(Vec3 x, double range, F &&f) const
   {
     std::int64_t lo[3], hi[3];
+    double span = 1;
     for (int d = 0; d < 3; ++d) {
       lo[d] = coord(x[d] - range);
       hi[d] = coord(x[d] + range);
+      span *= static_cast<double>(hi[d]) - static_cast<double>(lo[d]) + 1;
+    }
+    // A box over more cells than the grid holds (or not finite): every
+    // cell, each once.
+    if (!(span <= static_cast<double>(cell_items_.size())) || !(range < INFINITY)) {
+      for (const std::vector<int> &items : cell_items_)
+        for (int item : items) f(item);
+      return;
     }
     for (std::int64_t i = lo[0]; i <= hi[0]; ++i)
       for (std::int64_t j = lo[1]; j <= hi[1]; ++j)
@@ -53,9 +64,14 @@ public:
   }
 
 private:
+  // Clamped, so that a coordinate far outside the scene (or not finite)
+  // still names a cell: converting a double out of range is undefined.
   std::int64_t coord(double v) const
   {
-    return static_cast<std::int64_t>(std::floor(v * inv_cell_));
+    constexpr double kLimit = 4.0e18;    // below 2^63
+    const double c = std::floor(v * inv_cell_);
+    if (c >= -kLimit && c <= kLimit) return static_cast<std::int64_t>(c);
+    return c > 0 ? static_cast<std::int64_t>(kLimit) : -static_cast<std::int64_t>(kLimit);
   }
   static std::uint64_t key(std::int64_t i, std::int64_t j, std::int64_t k);
   std::size_t slot_of(std::uint64_t key) const

@@ -703,19 +703,10 @@ void FixReinforceInvert::setup_pre_exchange()
   invoke();
 }
 
-// A run with "pre no" skips setup_pre_exchange (and init), but LAMMPS
-// still calls setup() of every fix: the fix says it did not relocate.
-void FixReinforceInvert::setup(int /*vflag*/)
-{
-  warn_if_not_relocated();
-}
-
-void FixReinforceInvert::min_setup(int /*vflag*/)
-{
-  warn_if_not_relocated();
-}
-
-void FixReinforceInvert::warn_if_not_relocated()
+// A run with "pre no" skips init and setup (LAMMPS calls only
+// output->setup), but every run ends with post_run() of every fix: there the
+// fix says it did not relocate.
+void FixReinforceInvert::post_run()
 {
   if (!invoked && !setup_seen && comm->me == 0)
     error->warning(FLERR, std::string("Fix reinforce/invert did not relocate: the setup of this "

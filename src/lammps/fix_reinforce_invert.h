@@ -53,8 +53,7 @@ public:
   int setmask() override;
   void init() override;
   void setup_pre_exchange() override;
-  void setup(int) override;
-  void min_setup(int) override;
+  void post_run() override;
 #if REINFORCE_LAMMPS_SOURCE_BUILD
   void init_list(int, class NeighList *) override;
 #endif
@@ -108,7 +107,6 @@ private:
   void check_walls();
   bool shares_matrix_atoms(const class Fix *other);
   void find_other_rebar(int &bits, std::string &names);
-  void warn_if_not_relocated();
   void invoke();
 };
 

@@ -5,12 +5,16 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_mesh_surface.h"
 #include "fix_multisphere.h"
+#include "fix_wall_gran.h"
 #include "group.h"
 #include "memory.h"
 #include "neighbor.h"
 #include "modify.h"
+#include "primitive_wall_definitions.h"
 #include "region.h"
+#include "tri_mesh.h"
 #include "update.h"
 
 #include "mpi_gather.h"
@@ -97,6 +101,13 @@ void FixReinforceInvert::init()
     const int r = domain->find_region(const_cast<char *>(options_.region.c_str()));
     if (r < 0) fail("Fix reinforce/invert region '" + options_.region + "' does not exist");
     region_ = domain->regions[r];
+    // Whole spheres are kept inside the region by its surface distance
+    // (placement_domain), which these regions do not have.
+    if (std::strcmp(region_->style, "mesh/tet") == 0 ||
+        (std::strcmp(region_->style, "wedge") == 0 && !region_->interior))
+      fail("Fix reinforce/invert region '" + options_.region + "' (" + region_->style +
+           (region_->interior ? "" : ", side out") +
+           ") has no surface distance: whole spheres cannot be kept inside it");
   }
 }
 
@@ -118,6 +129,18 @@ void FixReinforceInvert::pre_exchange()
   invoke();
 }
 
+// run N pre no after an earlier run calls no setup hook on any fix (Run
+// skips init and the integrator's setup, so neither setup_pre_exchange nor
+// Modify::setup), and a fix added since the last init is in none of
+// Modify's lists for the steps; Verlet::cleanup calls post_run on every
+// fix after every run.
+void FixReinforceInvert::post_run()
+{
+  if (!invoked_)
+    warn("Fix reinforce/invert did not relocate: the setup of this run was skipped (run pre no); "
+         "it relocates at the setup of a run with pre yes");
+}
+
 void FixReinforceInvert::invoke()
 {
   invoked_ = true;
@@ -126,6 +149,8 @@ void FixReinforceInvert::invoke()
   std::fill(pending_, pending_ + nmax_, 0);
   if (region_) region_->prematch();
   check_multisphere_bodies();
+  read_walls();
+  find_anchors();
   // A raised ghost cutoff is put back on every way out, also when an error
   // unwinds through the invocation (a host built to throw).
   struct RestoreGhostCutoff {
@@ -135,6 +160,7 @@ void FixReinforceInvert::invoke()
   exchange_.reset(new reinforce::MpiExchange(world));
   const reinforce::Totals t = reinforce::run_invocation(*this, options_);
   exchange_.reset();
+  warn_anchors();
   output_ = reinforce::output_vector(t);
   // As delete_atoms does: the global count and the atom map.
   bigint nlocal = atom->nlocal;
@@ -165,6 +191,197 @@ void FixReinforceInvert::check_multisphere_bodies()
           modify->fix[ifix]->id + " (" + modify->fix[ifix]->style +
           "); leave the bodies out of the fix group");
   }
+}
+
+/* ---- walls and anchors ---- */
+
+// The walls of the wall fixes that act on atoms of the fix group, for the
+// engine (placement_domain): the meshes and primitive walls of fix
+// wall/gran. Any other wall fix stops the run, its geometry being unknown
+// here, unless the region keyword holds the matrix or walls ignore is
+// given. Collective: every process reads the same fixes in the same order.
+void FixReinforceInvert::read_walls()
+{
+  wall_planes_.clear();
+  wall_cylinders_.clear();
+  wall_triangles_.clear();
+  walls_.reset();
+  walls_margin_ = -1;
+  if (options_.walls_ignore) return;
+  std::string honoured, skipped;
+  std::vector<const FixMeshSurface *> seen;    // a mesh of two wall fixes, once
+  for (int k = 0; k < modify->nfix; ++k) {
+    Fix *f = modify->fix[k];
+    if (std::strncmp(f->style, "wall/", 5) != 0 || !shares_atoms(f->groupbit)) continue;
+    auto *wall = dynamic_cast<FixWallGran *>(f);
+    std::string what;
+    if (wall && wall->is_mesh_wall()) {
+      int meshes = 0, triangles = 0;
+      for (int m = 0; m < wall->n_meshes(); ++m) {
+        FixMeshSurface *mesh = wall->mesh_list()[m];
+        if (std::find(seen.begin(), seen.end(), mesh) != seen.end()) continue;
+        seen.push_back(mesh);
+        triangles += add_mesh(*mesh);
+        meshes++;
+      }
+      if (meshes > 0)
+        what = std::to_string(meshes) + (meshes == 1 ? " mesh (" : " meshes (") +
+               std::to_string(triangles) + " triangles)";
+    } else if (wall && wall->primitiveWall()) {
+      what = add_primitive_wall(*wall->primitiveWall());
+      if (what.empty()) cannot_see_walls(*f, skipped);
+    } else {
+      cannot_see_walls(*f, skipped);
+    }
+    if (!what.empty()) honoured += (honoured.empty() ? "" : ", ") + what + " of fix " + f->id;
+  }
+  if (!honoured.empty() || !skipped.empty())
+    log("fix reinforce/invert: walls: " + (honoured.empty() ? "none read" : honoured) + skipped +
+        "\n");
+}
+
+// True when an atom of the fix group is in the group of `bit` (collective).
+bool FixReinforceInvert::shares_atoms(int bit)
+{
+  int mine = 0, any = 0;
+  for (int i = 0; i < atom->nlocal && !mine; ++i)
+    mine = (atom->mask[i] & groupbit) && (atom->mask[i] & bit);
+  MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+  return any != 0;
+}
+
+// A wall fix whose geometry the adapter cannot read: with the region
+// keyword the region keeps the spheres where the matrix is, and the wall is
+// noted in the log line; else the run stops.
+void FixReinforceInvert::cannot_see_walls(const Fix &wall, std::string &skipped)
+{
+  const std::string which = std::string("fix ") + wall.id + " (" + wall.style + ")";
+  if (options_.region.empty())
+    fail("Fix reinforce/invert cannot see the walls of " + which +
+         ": give a region that holds the matrix (region keyword: whole spheres are kept inside "
+         "it) or walls ignore");
+  skipped += "; " + which + " not read: region " + options_.region + " holds the matrix";
+}
+
+// A primitive wall as a plane or cylinder, with its name for the log (empty
+// when its type has no counterpart). The parameters, as
+// primitive_wall_definitions.h uses them: a plane's position along its
+// axis; a cylinder's radius, then its centre in the two other axes d + 1
+// and d + 2 (mod 3): ycylinder R A B is centred at z = A, x = B.
+std::string FixReinforceInvert::add_primitive_wall(const PrimitiveWall &wall)
+{
+  namespace walls = PRIMITIVE_WALL_DEFINITIONS;
+  std::vector<double> p;
+  const int type = primitive_wall_shape(wall, p);
+  reinforce::Boundaries probe;    // refuses degenerate or non-finite walls
+  if (type >= walls::XPLANE && type <= walls::ZPLANE && p.size() == 1) {
+    const int d = type - walls::XPLANE;
+    reinforce::Plane plane;
+    plane.point[d] = p[0];
+    plane.normal[d] = 1;
+    if (!probe.add(plane)) return "";
+    wall_planes_.push_back(plane);
+  } else if (type >= walls::XCYLINDER && type <= walls::ZCYLINDER && p.size() == 3) {
+    const int d = type - walls::XCYLINDER;
+    reinforce::Cylinder cylinder;
+    cylinder.axis[d] = 1;
+    cylinder.point[(d + 1) % 3] = p[1];
+    cylinder.point[(d + 2) % 3] = p[2];
+    cylinder.radius = p[0];
+    if (!probe.add(cylinder)) return "";
+    wall_cylinders_.push_back(cylinder);
+  } else {
+    return "";
+  }
+  return std::string("1 primitive wall (") + walls::wallString[type] + ")";
+}
+
+// Every triangle of a mesh, the same complete set on every process; returns
+// their number. Before the mesh's first setup (FixMesh::setup_pre_force,
+// after this fix's setup_pre_exchange at the first run), and for a mesh
+// that is never parallel, every process holds all the elements; afterwards
+// each holds those it owns (the first sizeLocal) and ghost copies, and the
+// owned ones of all processes are gathered. isParallel is the same on
+// every process.
+int FixReinforceInvert::add_mesh(FixMeshSurface &fix)
+{
+  TriMesh *mesh = fix.triMesh();
+  std::vector<double> mine;
+  mine.reserve(9 * static_cast<std::size_t>(mesh->sizeLocal()));
+  for (int i = 0; i < mesh->sizeLocal(); ++i)
+    for (int j = 0; j < 3; ++j) {
+      double p[3];
+      mesh->node(i, j, p);
+      mine.insert(mine.end(), p, p + 3);
+    }
+  const std::vector<double> all = mesh->isParallel() ? gather_all(mine) : mine;
+  for (std::size_t k = 0; k + 9 <= all.size(); k += 9)
+    wall_triangles_.push_back({{all[k], all[k + 1], all[k + 2]},
+                               {all[k + 3], all[k + 4], all[k + 5]},
+                               {all[k + 6], all[k + 7], all[k + 8]}});
+  return static_cast<int>(all.size() / 9);
+}
+
+// The walls for the engine. In a periodic dimension the engine's
+// coordinates reach beyond the box (ghost images, new centres next to
+// them), and the walls must be there too: triangles get their images
+// within twice the ghost reach of the box (which holds every sphere a
+// process sees). Planes and cylinders are taken as they are. Built again
+// only when that reach grows (the engine asks before and after raising the
+// ghost cutoff); the same on every process.
+std::shared_ptr<const reinforce::Boundaries> FixReinforceInvert::walls_in_view()
+{
+  if (wall_planes_.empty() && wall_cylinders_.empty() && wall_triangles_.empty()) return nullptr;
+  double margin = 0;
+  for (int d = 0; d < 3 && !wall_triangles_.empty(); ++d)
+    if (domain->periodicity[d]) margin = std::max(margin, 2 * ghost_reach(d));
+  if (walls_ && margin <= walls_margin_) return walls_;
+  auto walls = std::make_shared<reinforce::Boundaries>();
+  for (const reinforce::Plane &p : wall_planes_) walls->add(p);
+  for (const reinforce::Cylinder &c : wall_cylinders_) walls->add(c);
+  std::vector<reinforce::Triangle> all = wall_triangles_;
+  for (int d = 0; d < 3 && margin > 0; ++d) {
+    if (!domain->periodicity[d]) continue;
+    const double length = domain->prd[d];
+    const int shifts = static_cast<int>(std::ceil(margin / length));
+    const std::size_t n = all.size();
+    for (std::size_t t = 0; t < n; ++t)
+      for (int s = -shifts; s <= shifts; ++s) {
+        if (s == 0) continue;
+        reinforce::Triangle image = all[t];
+        for (reinforce::Vec3 *v : {&image.a, &image.b, &image.c}) (*v)[d] += s * length;
+        const double lo = std::min({image.a[d], image.b[d], image.c[d]});
+        const double hi = std::max({image.a[d], image.b[d], image.c[d]});
+        if (hi >= domain->boxlo[d] - margin && lo <= domain->boxhi[d] + margin)
+          all.push_back(image);
+      }
+  }
+  for (const reinforce::Triangle &t : all) walls->add(t);
+  walls_ = walls;
+  walls_margin_ = margin;
+  return walls_;
+}
+
+// The fixes spring/self: a moved atom of their group stays tied to its old
+// position, through whatever lies between (a bar).
+void FixReinforceInvert::find_anchors()
+{
+  anchors_.clear();
+  for (int k = 0; k < modify->nfix; ++k)
+    if (std::strcmp(modify->fix[k]->style, "spring/self") == 0)
+      anchors_.push_back({modify->fix[k]->id, modify->fix[k]->groupbit, {}});
+}
+
+// Collective.
+void FixReinforceInvert::warn_anchors()
+{
+  for (const Anchors &a : anchors_) {
+    const long long n = std::llround(sum(static_cast<double>(a.moved.size())));
+    if (n > 0)
+      warn("Fix reinforce/invert moved " + std::to_string(n) + " atoms held by fix " + a.id +
+           " (spring/self): their anchors are still the old positions");
+  }
+  anchors_.clear();
 }
 
 double FixReinforceInvert::compute_vector(int n)
@@ -237,6 +454,16 @@ reinforce::AtomArrays FixReinforceInvert::atoms()
   a.pending = pending_;
   a.group_bit = groupbit;
   a.rebar_bit = rebar_bit_;
+  // The bars of the other reinforce/invert fixes stay as they are.
+  std::vector<std::string> others;
+  for (int k = 0; k < modify->nfix; ++k) {
+    Fix *f = modify->fix[k];
+    if (f == this || std::strcmp(f->style, "reinforce/invert") != 0) continue;
+    a.frozen_bits |= static_cast<FixReinforceInvert *>(f)->rebar_bit_;
+    others.push_back(f->id);
+  }
+  for (std::size_t k = 0; k < others.size(); ++k)
+    a.frozen_by += (k == 0 ? (others.size() == 1 ? "fix " : "fixes ") : ", ") + others[k];
   return a;
 }
 
@@ -299,9 +526,20 @@ reinforce::Domain FixReinforceInvert::placement_domain()
     d.sub_hi[k] = domain->subhi[k];
   }
   if (region_) {
+    // match_shrinkby_cut(x, cut) is match(x) and no contact with the
+    // region's surface closer than cut on the region's side: for side in
+    // the centre is inside and surface_interior finds no face within cut,
+    // for side out it is outside the shape and surface_exterior finds none
+    // (the distances fix wall/region uses). Either way the ball of radius
+    // cut lies wholly in the region. (region.h calls it "OR"; the code is
+    // AND.) A moving region was set for this step by prematch in invoke.
     Region *region = region_;
-    d.region = [region](const reinforce::Vec3 &c) { return region->match(c.x, c.y, c.z) != 0; };
+    d.region = [region](const reinforce::Vec3 &c, double r) {
+      double x[3] = {c.x, c.y, c.z};
+      return region->match_shrinkby_cut(x, r) != 0;
+    };
   }
+  d.walls = walls_in_view();
   return d;
 }
 
@@ -316,6 +554,8 @@ void FixReinforceInvert::move(int i, reinforce::Vec3 x, double r)
   atom->rmass[i] *= scale * scale * scale;    // same material density
   atom->radius[i] = r;
   pending_[i] = 0;
+  for (Anchors &a : anchors_)
+    if (atom->mask[i] & a.bit) a.moved.insert(atom->tag[i]);
 }
 
 // As delete_atoms does: the last owned atom moves into each hole (avec->copy
@@ -375,6 +615,11 @@ void FixReinforceInvert::log(const std::string &line)
   if (comm->me != 0) return;
   if (screen) std::fputs(line.c_str(), screen);
   if (logfile) std::fputs(line.c_str(), logfile);
+}
+
+void FixReinforceInvert::warn(const std::string &message)
+{
+  if (comm->me == 0) error->warning(FLERR, message.c_str());
 }
 
 void FixReinforceInvert::fail(const std::string &message)

@@ -16,13 +16,22 @@ FixStyle(reinforce/invert,FixReinforceInvert)
 #include "fix.h"
 #include "invocation.h"
 
+#include <cstdint>
 #include <memory>
+#include <string>
+#include <unordered_set>
+#include <vector>
 
 namespace reinforce {
 class MpiExchange;
 }
 
 namespace LAMMPS_NS {
+
+class PrimitiveWall;
+// A primitive wall's type (PRIMITIVE_WALL_DEFINITIONS::WallType) and its
+// parameters, which LIGGGHTS keeps private (primitive_wall_access.cpp).
+int primitive_wall_shape(const PrimitiveWall &wall, std::vector<double> &param);
 
 class FixReinforceInvert : public Fix, private reinforce::HostHooks {
 public:
@@ -32,6 +41,7 @@ public:
   void init();
   void setup_pre_exchange();
   void pre_exchange();
+  void post_run();
   double compute_vector(int);
 
   void grow_arrays(int);
@@ -51,9 +61,31 @@ private:
   bool invoked_ = false;
   double user_cutghost_ = -1;                           // >= 0 while the ghost cutoff is raised
   std::unique_ptr<reinforce::MpiExchange> exchange_;    // the rounds' results, per invocation
+  // The walls of the wall fixes, read at each invocation (read_walls), and
+  // the engine's copy of them (with periodic images of the triangles).
+  std::vector<reinforce::Plane> wall_planes_;
+  std::vector<reinforce::Cylinder> wall_cylinders_;
+  std::vector<reinforce::Triangle> wall_triangles_;
+  std::shared_ptr<const reinforce::Boundaries> walls_;
+  double walls_margin_ = -1;    // how far beyond the box walls_ holds triangle images
+  // fix spring/self: the atoms of its group this invocation moved (by ID).
+  struct Anchors {
+    std::string id;
+    int bit;
+    std::unordered_set<std::int64_t> moved;
+  };
+  std::vector<Anchors> anchors_;
 
   void invoke();
   void check_multisphere_bodies();
+  void read_walls();
+  bool shares_atoms(int bit);
+  void cannot_see_walls(const Fix &wall, std::string &skipped);
+  std::string add_primitive_wall(const PrimitiveWall &wall);
+  int add_mesh(class FixMeshSurface &mesh);
+  std::shared_ptr<const reinforce::Boundaries> walls_in_view();
+  void find_anchors();
+  void warn_anchors();
 
   // reinforce::HostHooks
   void refresh() override;
@@ -75,6 +107,7 @@ private:
   void finish_results() override;
   double wall_time() override;
   void log(const std::string &line) override;
+  void warn(const std::string &message) override;
   void fail(const std::string &message) override;
 };
 

@@ -5,9 +5,14 @@
 // (write_dump works too). A file with several snapshots: the last is used.
 // Standalone C++17, no host headers. Usage and checks: tests/tools/README.md.
 //
-//   check_scene --before B --after A [--rebar-type T] [--tol 1e-6]
+//   check_scene --before B --after A [--rebar-type T[,T...]] [--tol 1e-6]
 //               [--rmin R] [--rmax R] [--deleted N] [--kept-ok]
 //               [--overlap-ok-before | --clean-before]
+//               [--wall-plane PX PY PZ NX NY NZ]... [--wall-stl FILE]...
+//               [--wall-cylinder x|y|z C1 C2 R inside|outside]...
+//               [--inside-box XLO XHI YLO YHI ZLO ZHI]...
+//       the wall options: every moved matrix sphere wholly on the matrix
+//       side of each wall (within tol of its radius), one check line each
 //   check_scene --same A B        the two dumps hold identical atoms (text)
 //   check_scene --stats D [--rebar-type T] [--rmin R]
 //       one line: atoms N matrix M max_matrix_rebar X max_matrix_matrix Y
@@ -24,6 +29,7 @@
 // d > tol * min(r_i, r_j). Exit status: 0 every check passed, 1 a check
 // failed, 2 bad usage or unreadable input.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -96,6 +102,16 @@ long to_long(const std::string &s, const std::string &what)
   const long v = std::strtol(s.c_str(), &end, 10);
   if (s.empty() || *end) bad(what + ": not an integer: '" + s + "'");
   return v;
+}
+
+// A bound: a finite number, or INF / -INF (any case): no bound.
+double to_bound(const std::string &s, const std::string &what)
+{
+  std::string l = s;
+  for (char &ch : l) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  if (l == "inf" || l == "+inf") return INFINITY;
+  if (l == "-inf") return -INFINITY;
+  return to_double(s, what);
 }
 
 std::vector<std::string> split(const std::string &line)
@@ -190,6 +206,14 @@ Dump read_dump(const std::string &path)
 // contact), never for use.
 bool brute_force = false;
 double grid_scale = 1.0;
+
+// The atom types that are rebar (--rebar-type, a comma list or repeated;
+// default 2). All other types are matrix.
+std::vector<int> rebar_types = {2};
+bool is_rebar(int type)
+{
+  return std::find(rebar_types.begin(), rebar_types.end(), type) != rebar_types.end();
+}
 
 // Calls f(i, j, overlap) once for every pair i < j closer than r_i + r_j
 // (overlap > 0), minimum image in periodic dimensions, through a cell grid
@@ -305,12 +329,215 @@ bool same_place(const Dump &box, const Atom &a, const Atom &b)
   return true;
 }
 
+// ---------------------------------------------------------------------------
+// Walls the moved matrix spheres must stay clear of (--wall-plane,
+// --wall-cylinder, --wall-stl, --inside-box): exact geometry, brute force.
+struct Vec {
+  double x = 0, y = 0, z = 0;
+};
+Vec operator-(Vec a, Vec b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+Vec operator+(Vec a, Vec b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+Vec operator*(double s, Vec a) { return {s * a.x, s * a.y, s * a.z}; }
+double dot(Vec a, Vec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+Vec cross(Vec a, Vec b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+double norm(Vec a) { return std::sqrt(dot(a, a)); }
+Vec vec(const double *x) { return {x[0], x[1], x[2]}; }
+
+struct Triangle {
+  Vec a, b, c;
+};
+
+// The point of segment [a, b] closest to p.
+Vec closest_on_segment(Vec p, Vec a, Vec b)
+{
+  const Vec ab = b - a;
+  const double len2 = dot(ab, ab);
+  if (!(len2 > 0)) return a;
+  const double t = std::min(1.0, std::max(0.0, dot(p - a, ab) / len2));
+  return a + t * ab;
+}
+
+// The exact distance from p to the closed triangle t: the closest point is
+// in the face, on an edge or a vertex (Voronoi regions of the triangle, as
+// in Ericson, Real-Time Collision Detection, 5.1.5). A degenerate triangle
+// (no area) is its three edges.
+double point_triangle_distance(Vec p, const Triangle &t)
+{
+  const Vec ab = t.b - t.a, ac = t.c - t.a, n = cross(ab, ac);
+  if (!(dot(n, n) > 0)) {
+    double d = INFINITY;
+    for (const auto &e : {std::make_pair(t.a, t.b), std::make_pair(t.b, t.c), std::make_pair(t.c, t.a)})
+      d = std::min(d, norm(p - closest_on_segment(p, e.first, e.second)));
+    return d;
+  }
+  const Vec ap = p - t.a;
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0 && d2 <= 0) return norm(p - t.a);    // vertex a
+  const Vec bp = p - t.b;
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3) return norm(p - t.b);    // vertex b
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return norm(p - (t.a + (d1 / (d1 - d3)) * ab));    // edge ab
+  const Vec cp = p - t.c;
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6) return norm(p - t.c);    // vertex c
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return norm(p - (t.a + (d2 / (d2 - d6)) * ac));    // edge ac
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)    // edge bc
+    return norm(p - (t.b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (t.c - t.b)));
+  // the face: the distance to its plane
+  return std::fabs(dot(ap, n)) / norm(n);
+}
+
+// 2-d helpers for a segment lying in the plane of a triangle.
+double orient2(double ax, double ay, double bx, double by, double cx, double cy)
+{
+  return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+}
+bool segments_meet_2d(const double *p, const double *q, const double *a, const double *b)
+{
+  const double o1 = orient2(p[0], p[1], q[0], q[1], a[0], a[1]);
+  const double o2 = orient2(p[0], p[1], q[0], q[1], b[0], b[1]);
+  const double o3 = orient2(a[0], a[1], b[0], b[1], p[0], p[1]);
+  const double o4 = orient2(a[0], a[1], b[0], b[1], q[0], q[1]);
+  if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
+    return true;
+  auto on = [](const double *u, const double *v, const double *w, double o) {    // w on [u, v]
+    return o == 0 && std::min(u[0], v[0]) <= w[0] && w[0] <= std::max(u[0], v[0]) &&
+           std::min(u[1], v[1]) <= w[1] && w[1] <= std::max(u[1], v[1]);
+  };
+  return on(p, q, a, o1) || on(p, q, b, o2) || on(a, b, p, o3) || on(a, b, q, o4);
+}
+
+// Whether q, a point in the plane of t (normal n = (b - a) x (c - a)), lies
+// in the closed triangle.
+bool in_triangle(Vec q, const Triangle &t, Vec n)
+{
+  return dot(cross(t.b - t.a, q - t.a), n) >= 0 && dot(cross(t.c - t.b, q - t.b), n) >= 0 &&
+         dot(cross(t.a - t.c, q - t.c), n) >= 0;
+}
+
+// Whether the closed segment [p0, p1] meets the closed triangle t.
+bool segment_crosses_triangle(Vec p0, Vec p1, const Triangle &t)
+{
+  const Vec n = cross(t.b - t.a, t.c - t.a);
+  if (!(dot(n, n) > 0)) return false;    // no area: nothing to cross
+  const double d0 = dot(n, p0 - t.a), d1 = dot(n, p1 - t.a);
+  if ((d0 > 0 && d1 > 0) || (d0 < 0 && d1 < 0)) return false;
+  if (d0 == 0 && d1 == 0) {    // in the triangle's plane: 2-d, dropping the normal's largest axis
+    const int drop = std::fabs(n.x) >= std::fabs(n.y) && std::fabs(n.x) >= std::fabs(n.z) ? 0
+                     : std::fabs(n.y) >= std::fabs(n.z)                                    ? 1
+                                                                                           : 2;
+    auto flat = [drop](Vec v, double *out) {
+      const double c[3] = {v.x, v.y, v.z};
+      for (int k = 0, m = 0; k < 3; ++k)
+        if (k != drop) out[m++] = c[k];
+    };
+    double a[2], b[2], c[2], p[2], q[2];
+    flat(t.a, a), flat(t.b, b), flat(t.c, c), flat(p0, p), flat(p1, q);
+    if (in_triangle(p0, t, n) || in_triangle(p1, t, n)) return true;
+    return segments_meet_2d(p, q, a, b) || segments_meet_2d(p, q, b, c) ||
+           segments_meet_2d(p, q, c, a);
+  }
+  const double s = d0 / (d0 - d1);
+  return in_triangle(p0 + s * (p1 - p0), t, n);
+}
+
+// Reads the triangles of an ASCII STL file (facet ... outer loop, three
+// vertex lines, endloop, endfacet; keywords in any case).
+std::vector<Triangle> read_stl(const std::string &path)
+{
+  std::ifstream in(path);
+  if (!in) bad("cannot read " + path);
+  std::vector<Triangle> tris;
+  std::vector<Vec> v;
+  bool in_facet = false;
+  long lineno = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++lineno;
+    std::vector<std::string> f = split(line);
+    if (f.empty()) continue;
+    std::string k = f[0];
+    for (char &ch : k) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    const std::string where = path + ":" + std::to_string(lineno);
+    if (k == "facet") {
+      if (in_facet) bad(where + ": facet inside a facet");
+      in_facet = true;
+      v.clear();
+    } else if (k == "vertex") {
+      if (!in_facet || f.size() != 4) bad(where + ": expected 'vertex X Y Z' inside a facet");
+      v.push_back({to_double(f[1], where), to_double(f[2], where), to_double(f[3], where)});
+    } else if (k == "endfacet") {
+      if (!in_facet || v.size() != 3)
+        bad(where + ": a facet needs exactly three vertices (has " + std::to_string(v.size()) + ")");
+      tris.push_back({v[0], v[1], v[2]});
+      in_facet = false;
+    }
+  }
+  if (in_facet) bad(path + ": unterminated facet");
+  if (tris.empty()) bad(path + ": no facet (an ASCII STL is needed)");
+  return tris;
+}
+
+std::string numg(double v)
+{
+  char b[64];
+  std::snprintf(b, sizeof b, "%.6g", v);
+  return b;
+}
+
+struct Wall {
+  enum Kind { Plane, Cylinder, Stl, Box } kind = Plane;
+  Vec point, normal;                   // plane: a point, the unit normal (the matrix side)
+  int axis = 2;                        // cylinder: 0, 1, 2 = x, y, z
+  double c1 = 0, c2 = 0, radius = 0;    // cylinder: the axis through (c1, c2), its radius
+  bool inside = true;                  // cylinder: the matrix inside
+  std::vector<Triangle> triangles;     // stl
+  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};    // box (may be infinite)
+  std::string label;                   // what the check line calls it
+
+  // How far a sphere (centre x, radius r) reaches through the wall, as a
+  // fraction of r: > 0 reaches through, <= 0 clear by that gap.
+  double depth(Vec x, double r) const
+  {
+    switch (kind) {
+    case Plane: return (r - dot(x - point, normal)) / r;
+    case Cylinder: {
+      const double c[3] = {x.x, x.y, x.z};
+      const int u = axis == 0 ? 1 : 0, w = axis == 2 ? 1 : 2;
+      const double rho = std::hypot(c[u] - c1, c[w] - c2);
+      return inside ? (rho + r - radius) / r : (radius + r - rho) / r;
+    }
+    case Stl: {
+      double d = INFINITY;
+      for (const Triangle &t : triangles) d = std::min(d, point_triangle_distance(x, t));
+      return (r - d) / r;
+    }
+    case Box: {
+      const double c[3] = {x.x, x.y, x.z};
+      double worst = -INFINITY;
+      for (int k = 0; k < 3; ++k) worst = std::max({worst, (lo[k] - (c[k] - r)) / r, (c[k] + r - hi[k]) / r});
+      return worst;
+    }
+    }
+    return 0;
+  }
+  bool crossed(Vec from, Vec to) const
+  {
+    if (kind != Stl) return false;
+    for (const Triangle &t : triangles)
+      if (segment_crosses_triangle(from, to, t)) return true;
+    return false;
+  }
+};
+
 struct Options {
   std::string before, after, same_a, same_b, stats, packing, compare;
-  int rebar_type = 2;
   double tol = 1e-6, rmin = 0, rmax = 0;
   long deleted = -1;
   bool kept_ok = false, clean_before = false;
+  std::vector<Wall> walls;
 };
 
 int run_same(const Options &o)
@@ -335,7 +562,7 @@ int run_stats(const Options &o, bool describe)
   double rmin = o.rmin, smallest = INFINITY, largest = 0, volume = 0;
   long nm = 0;
   for (const Atom &a : d.atoms)
-    if (a.type != o.rebar_type) {
+    if (!is_rebar(a.type)) {
       smallest = std::min(smallest, a.r);
       largest = std::max(largest, a.r);
       volume += 4.0 / 3.0 * 3.14159265358979323846 * a.r * a.r * a.r;
@@ -345,7 +572,7 @@ int run_stats(const Options &o, bool describe)
   double mr = 0, mm = 0;
   long nmm = 0;
   for_each_contact(d, [&](std::size_t i, std::size_t j, double ov) {
-    const bool ri = d.atoms[i].type == o.rebar_type, rj = d.atoms[j].type == o.rebar_type;
+    const bool ri = is_rebar(d.atoms[i].type), rj = is_rebar(d.atoms[j].type);
     if (ri && rj) return;
     if (ri || rj)
       mr = std::max(mr, ov / rmin);
@@ -361,7 +588,7 @@ int run_stats(const Options &o, bool describe)
   }
   double wall = -INFINITY;    // largest penetration of a matrix sphere through a wall
   for (const Atom &a : d.atoms)
-    if (a.type != o.rebar_type)
+    if (!is_rebar(a.type))
       for (int k = 0; k < 3; ++k)
         if (d.fixed[k]) wall = std::max({wall, d.lo[k] - (a.x[k] - a.r), a.x[k] + a.r - d.hi[k]});
   const double box = d.length(0) * d.length(1) * d.length(2);
@@ -437,7 +664,6 @@ int run_compare(const Options &o)
 int run_check(Options o)
 {
   const Dump before = read_dump(o.before), after = read_dump(o.after);
-  const int rebar = o.rebar_type;
 
   // The accepted radius range: given, or that of the matrix before (the
   // fix's default).
@@ -445,7 +671,7 @@ int run_check(Options o)
   if (!given_range) {
     double lo = INFINITY, hi = 0;
     for (const Atom &a : before.atoms)
-      if (a.type != rebar) {
+      if (!is_rebar(a.type)) {
         lo = std::min(lo, a.r);
         hi = std::max(hi, a.r);
       }
@@ -477,8 +703,8 @@ int run_check(Options o)
   std::vector<char> was_target(before.atoms.size(), 0);
   for_each_contact(before, [&](std::size_t i, std::size_t j, double ov) {
     const Atom &a = before.atoms[i], &b = before.atoms[j];
-    if ((a.type == rebar) == (b.type == rebar) || ov <= o.tol * std::min(a.r, b.r)) return;
-    was_target[a.type == rebar ? j : i] = 1;
+    if (is_rebar(a.type) == is_rebar(b.type) || ov <= o.tol * std::min(a.r, b.r)) return;
+    was_target[is_rebar(a.type) ? j : i] = 1;
   });
   long moved_targets = 0, moved_others = 0;
   double volume_targets_before = 0, volume_relocated_after = 0;
@@ -506,8 +732,8 @@ int run_check(Options o)
   double worst_kept = 0;
   for_each_contact(after, [&](std::size_t i, std::size_t j, double ov) {
     const Atom &a = after.atoms[i], &b = after.atoms[j];
-    if ((a.type == rebar) == (b.type == rebar)) return;
-    const std::size_t m = a.type == rebar ? j : i;
+    if (is_rebar(a.type) == is_rebar(b.type)) return;
+    const std::size_t m = is_rebar(a.type) ? j : i;
     if (moved[m] || ov <= o.tol * std::min(a.r, b.r)) return;
     worst_kept = std::max(worst_kept, ov / rmin);
     if (!kept[m]) ++kept_count;
@@ -519,7 +745,7 @@ int run_check(Options o)
   double worst_moved = 0, worst_packing = 0, worst_all = 0, worst_moved_kept = 0;
   for_each_contact(after, [&](std::size_t i, std::size_t j, double ov) {
     const Atom &a = after.atoms[i], &b = after.atoms[j];
-    const bool ra = a.type == rebar, rb = b.type == rebar;
+    const bool ra = is_rebar(a.type), rb = is_rebar(b.type);
     if (ra && rb) return;    // bars may be clumps of overlapping spheres
     worst_all = std::max(worst_all, ov / rmin);
     if (moved[i] || moved[j]) worst_moved = std::max(worst_moved, ov / rmin);
@@ -569,7 +795,7 @@ int run_check(Options o)
   double worst_before = 0;
   for_each_contact(before, [&](std::size_t i, std::size_t j, double ov) {
     const Atom &a = before.atoms[i], &b = before.atoms[j];
-    if (a.type == rebar || b.type == rebar) return;
+    if (is_rebar(a.type) || is_rebar(b.type)) return;
     if (ov <= o.tol * std::min(a.r, b.r)) return;
     ++before_pairs;
     worst_before = std::max(worst_before, ov / rmin);
@@ -586,7 +812,7 @@ int run_check(Options o)
   long out_of_range = 0, outside = 0;
   for (std::size_t i = 0; i < after.atoms.size(); ++i) {
     const Atom &a = after.atoms[i];
-    if (!moved[i] || a.type == rebar) continue;
+    if (!moved[i] || is_rebar(a.type)) continue;
     if (a.r < o.rmin * (1 - 1e-12) || a.r > o.rmax * (1 + 1e-12)) ++out_of_range;
     for (int k = 0; k < 3; ++k)
       if (after.fixed[k] &&
@@ -600,19 +826,57 @@ int run_check(Options o)
                                str(out_of_range) + " outside)");
   check(outside == 0,
         "moved spheres wholly inside the walls (ff dimensions) (" + str(outside) + " reach out)");
+  // The walls given: every moved matrix sphere wholly on the matrix side
+  // (depth <= tol, i.e. clear by r (1 - tol)), and for an STL, its centre's
+  // path from before to after crosses no triangle. The walls are in the
+  // dump's coordinates (no periodic images of them).
+  for (const Wall &w : o.walls) {
+    long checked = 0, through = 0, crossed = 0, worst_id = 0;
+    double worst = -INFINITY;
+    for (std::size_t i = 0; i < after.atoms.size(); ++i) {
+      const Atom &a = after.atoms[i];
+      if (!moved[i] || is_rebar(a.type)) continue;
+      ++checked;
+      const double depth = w.depth(vec(a.x), a.r);
+      if (depth > o.tol) ++through;
+      if (depth > worst) {
+        worst = depth;
+        worst_id = a.id;
+      }
+      // The path: the minimum-image displacement d, from the centre before
+      // and (the other image, when it crossed a periodic boundary) to the
+      // centre after.
+      if (const Atom *b = before.find(a.id)) {
+        double d[3];
+        after.delta(a.x, b->x, d);
+        if (w.crossed(vec(b->x), vec(b->x) + vec(d)) || w.crossed(vec(a.x) - vec(d), vec(a.x)))
+          ++crossed;
+      }
+    }
+    check(through == 0 && crossed == 0,
+          "moved spheres clear of the walls (" + w.label + ": " + str(through) + " of " + str(checked) +
+              " moved matrix spheres reach through by more than tol" +
+              (w.kind == Wall::Stl ? ", " + str(crossed) + " moved across a triangle" : "") +
+              (!checked     ? ""
+               : worst > 0 ? "; worst: id " + str(worst_id) + " reaches " + num(worst) +
+                                 " of its radius through"
+                           : "; closest: id " + str(worst_id) + ", clear by " + num(0.0 - worst) +
+                                 " of its radius") +
+              ")");
+  }
 
   long rebar_changed = 0, rebar_missing = 0, rebar_new = 0;
   for (const Atom &b : before.atoms) {
-    if (b.type != rebar) continue;
+    if (!is_rebar(b.type)) continue;
     const Atom *a = after.find(b.id);
-    if (!a || a->type != rebar)
+    if (!a || !is_rebar(a->type))
       ++rebar_missing;
     else if (!same_place(after, b, *a))
       ++rebar_changed;
   }
   for (const Atom &a : after.atoms) {
     const Atom *b = before.find(a.id);
-    if (a.type == rebar && (!b || b->type != rebar)) ++rebar_new;
+    if (is_rebar(a.type) && (!b || !is_rebar(b->type))) ++rebar_new;
   }
   check(rebar_missing == 0 && rebar_changed == 0 && rebar_new == 0,
         "rebar untouched (" + str(rebar_missing) + " missing, " + str(rebar_changed) + " moved, " +
@@ -636,7 +900,7 @@ int run_check(Options o)
     for (std::size_t i = 0; i < after.atoms.size(); ++i) {
       const Atom &a = after.atoms[i];
       const Atom *b = before.find(a.id);
-      if (!moved[i] || !b || a.type == rebar) continue;
+      if (!moved[i] || !b || is_rebar(a.type)) continue;
       const double da = a.mass / (a.r * a.r * a.r), db = b->mass / (b->r * b->r * b->r);
       const double rel = std::fabs(da - db) / std::max(std::fabs(da), std::fabs(db));
       ++weighed;
@@ -666,6 +930,7 @@ int run_check(Options o)
 int main(int argc, char **argv)
 {
   Options o;
+  bool rebar_given = false;
   for (int i = 1; i < argc; ++i) {
     const std::string k = argv[i];
     auto next = [&]() -> std::string {
@@ -676,8 +941,63 @@ int main(int argc, char **argv)
       o.before = next();
     else if (k == "--after")
       o.after = next();
-    else if (k == "--rebar-type")
-      o.rebar_type = static_cast<int>(to_long(next(), k));
+    else if (k == "--rebar-type") {
+      // a comma list, or the option repeated: the first replaces the default
+      if (!rebar_given) rebar_types.clear();
+      rebar_given = true;
+      std::string list = next();
+      for (char &ch : list)
+        if (ch == ',') ch = ' ';
+      const std::vector<std::string> types = split(list);
+      if (types.empty()) bad("--rebar-type needs a type");
+      for (const std::string &t : types) rebar_types.push_back(static_cast<int>(to_long(t, k)));
+    } else if (k == "--wall-plane") {
+      Wall w;
+      w.kind = Wall::Plane;
+      double v[6];
+      for (double &x : v) x = to_double(next(), k);
+      w.point = {v[0], v[1], v[2]};
+      const Vec n = {v[3], v[4], v[5]};
+      if (!(norm(n) > 0)) bad("--wall-plane: the normal must not be zero");
+      w.normal = (1 / norm(n)) * n;
+      w.label = "plane through (" + numg(v[0]) + ", " + numg(v[1]) + ", " + numg(v[2]) +
+                ") normal (" + numg(v[3]) + ", " + numg(v[4]) + ", " + numg(v[5]) + ")";
+      o.walls.push_back(w);
+    } else if (k == "--wall-cylinder") {
+      Wall w;
+      w.kind = Wall::Cylinder;
+      const std::string axis = next();
+      if (axis != "x" && axis != "y" && axis != "z") bad("--wall-cylinder: axis must be x, y or z");
+      w.axis = axis[0] - 'x';
+      w.c1 = to_double(next(), k);
+      w.c2 = to_double(next(), k);
+      w.radius = to_double(next(), k);
+      if (!(w.radius > 0)) bad("--wall-cylinder: the radius must be > 0");
+      const std::string side = next();
+      if (side != "inside" && side != "outside") bad("--wall-cylinder: expected inside or outside");
+      w.inside = side == "inside";
+      w.label = "cylinder along " + axis + " through (" + numg(w.c1) + ", " + numg(w.c2) +
+                ") radius " + numg(w.radius) + ", spheres " + side;
+      o.walls.push_back(w);
+    } else if (k == "--wall-stl") {
+      Wall w;
+      w.kind = Wall::Stl;
+      const std::string path = next();
+      w.triangles = read_stl(path);
+      w.label = "STL " + path + ", " + str(static_cast<long>(w.triangles.size())) + " triangles";
+      o.walls.push_back(w);
+    } else if (k == "--inside-box") {
+      Wall w;
+      w.kind = Wall::Box;
+      for (int d = 0; d < 3; ++d) {
+        w.lo[d] = to_bound(next(), k);
+        w.hi[d] = to_bound(next(), k);
+        if (!(w.lo[d] < w.hi[d])) bad("--inside-box: each low bound must be below its high bound");
+      }
+      w.label = "inside box [" + numg(w.lo[0]) + ", " + numg(w.hi[0]) + "] x [" + numg(w.lo[1]) +
+                ", " + numg(w.hi[1]) + "] x [" + numg(w.lo[2]) + ", " + numg(w.hi[2]) + "]";
+      o.walls.push_back(w);
+    }
     else if (k == "--tol")
       o.tol = to_double(next(), k);
     else if (k == "--rmin")
@@ -706,9 +1026,12 @@ int main(int argc, char **argv)
     else if (k == "--grid-scale")
       grid_scale = to_double(next(), k);
     else if (k == "-h" || k == "--help") {
-      std::printf("usage: check_scene --before B --after A [--rebar-type 2] [--tol 1e-6]\n"
+      std::printf("usage: check_scene --before B --after A [--rebar-type 2[,3...]] [--tol 1e-6]\n"
                   "                   [--rmin R --rmax R] [--deleted N] [--kept-ok]\n"
                   "                   [--overlap-ok-before | --clean-before]\n"
+                  "                   [--wall-plane PX PY PZ NX NY NZ]... [--wall-stl FILE]...\n"
+                  "                   [--wall-cylinder x|y|z C1 C2 R inside|outside]...\n"
+                  "                   [--inside-box XLO XHI YLO YHI ZLO ZHI]... (INF: no bound)\n"
                   "       check_scene --same A B\n"
                   "       check_scene --stats D | --packing D [--rebar-type 2] [--rmin R]\n"
                   "       check_scene --compare-grid D    (grid search against brute force)\n"

@@ -73,6 +73,54 @@ expect 1 '^FAIL: moved spheres kept their density \(mass / volume\) \(1 of 1 cha
 # walls (ff dimensions)
 expect 0 '^PASS: moved spheres wholly inside the walls' -- "${B[@]}" --after "$td/after_ok.dump"
 expect 1 '^FAIL: moved spheres wholly inside the walls.*\(1 reach out' -- "${B[@]}" --after "$td/after_outside.dump"
+# walls given on the command line: each is one line; only moved matrix
+# spheres count (the target relocated to (5, 7, 5), radius 1; the unmoved
+# sphere 3 at z = 2 lies below the planes z = 4 and 4.5 and is not failed)
+expect 0 '^PASS: moved spheres clear of the walls \(plane through \(0, 0, 4\) normal \(0, 0, 1\): 0 of 1 moved' -- "${B[@]}" --after "$td/after_ok.dump" --wall-plane 0 0 4 0 0 1
+expect 1 '^FAIL: moved spheres clear of the walls \(plane through \(0, 0, 4.5\) normal \(0, 0, 1\): 1 of 1 moved.*worst: id 2 reaches 0.5 of its radius' -- "${B[@]}" --after "$td/after_ok.dump" --wall-plane 0 0 4.5 0 0 1
+# ... the normal points to the matrix side (any length)
+expect 0 '^PASS: moved spheres clear of the walls \(plane through \(0, 0, 6\) normal \(0, 0, -3\)' -- "${B[@]}" --after "$td/after_ok.dump" --wall-plane 0 0 6 0 0 -3
+expect 1 '^FAIL: moved spheres clear of the walls \(plane .*normal \(0, 0, -1\): 1 of 1 moved.*reaches 0.5 of its' -- "${B[@]}" --after "$td/after_ok.dump" --wall-plane 0 0 5.5 0 0 -1
+# ... one line per wall, each failing on its own
+expect 1 '^FAIL: moved spheres clear of the walls \(plane through \(0, 0, 4.5\)' -- "${B[@]}" --after "$td/after_ok.dump" --wall-plane 0 0 4 0 0 1 --wall-plane 0 0 4.5 0 0 1
+expect 1 '^PASS: moved spheres clear of the walls \(plane through \(0, 0, 4\)' -- "${B[@]}" --after "$td/after_ok.dump" --wall-plane 0 0 4 0 0 1 --wall-plane 0 0 4.5 0 0 1
+# a cylinder: inside or outside; the centre in the two other coordinates (x, y, z order)
+expect 0 '^PASS: moved spheres clear of the walls \(cylinder along z through \(5, 5\) radius 3, spheres inside: 0 of 1' -- "${B[@]}" --after "$td/after_ok.dump" --wall-cylinder z 5 5 3 inside
+expect 1 '^FAIL: moved spheres clear of the walls \(cylinder along z through \(5, 5\) radius 2.5, spheres inside: 1 of 1.*reaches 0.5 of' -- "${B[@]}" --after "$td/after_ok.dump" --wall-cylinder z 5 5 2.5 inside
+expect 0 '^PASS: moved spheres clear of the walls \(cylinder along z through \(5, 5\) radius 1, spheres outside: 0 of 1' -- "${B[@]}" --after "$td/after_ok.dump" --wall-cylinder z 5 5 1 outside
+expect 1 '^FAIL: moved spheres clear of the walls \(cylinder along z .*radius 1.5, spheres outside: 1 of 1.*reaches 0.5 of' -- "${B[@]}" --after "$td/after_ok.dump" --wall-cylinder z 5 5 1.5 outside
+expect 0 '^PASS: moved spheres clear of the walls \(cylinder along x through \(7, 5\) radius 1, spheres inside' -- "${B[@]}" --after "$td/after_ok.dump" --wall-cylinder x 7 5 1 inside
+expect 1 '^FAIL: moved spheres clear of the walls \(cylinder along x .*radius 0.9, spheres inside: 1 of 1.*reaches 0.1 of' -- "${B[@]}" --after "$td/after_ok.dump" --wall-cylinder x 7 5 0.9 inside
+expect 1 '^FAIL: moved spheres clear of the walls \(cylinder along y through \(5, 5\) radius 1, spheres outside: 1 of 1.*reaches 2 of' -- "${B[@]}" --after "$td/after_ok.dump" --wall-cylinder y 5 5 1 outside
+# a block region: wholly inside (INF: no bound)
+expect 0 '^PASS: moved spheres clear of the walls \(inside box \[-inf, inf\] x \[6, inf\] x \[-inf, inf\]: 0 of 1' -- "${B[@]}" --after "$td/after_ok.dump" --inside-box -INF INF 6 INF -inf inf
+expect 1 '^FAIL: moved spheres clear of the walls \(inside box \[0, 10\] x \[0, 7.5\] x \[0, 10\]: 1 of 1.*reaches 0.5 of' -- "${B[@]}" --after "$td/after_ok.dump" --inside-box 0 10 0 7.5 0 10
+expect 1 '^FAIL: moved spheres clear of the walls \(inside box .*: 1 of 1.*reaches 0.2 of' -- "${B[@]}" --after "$td/after_ok.dump" --inside-box 4.2 10 0 10 0 10
+# an STL (ASCII, keywords in any case): the exact distance to the face, an
+# edge or a vertex, and the path of the centre (before to after) through a
+# triangle; a periodic move takes the minimum image
+expect 0 '^PASS: moved spheres clear of the walls \(STL .*wall_y8.5.stl, 2 triangles: 0 of 1 moved.*0 moved across a triangle; closest: id 2, clear by 0.5' -- "${B[@]}" --after "$td/after_ok.dump" --wall-stl "$td/wall_y8.5.stl"
+expect 1 '^FAIL: moved spheres clear of the walls \(STL .*wall_y7.5.stl, 2 triangles: 1 of 1 moved.*, 0 moved across a triangle; worst: id 2 reaches 0.5 of' -- "${B[@]}" --after "$td/after_ok.dump" --wall-stl "$td/wall_y7.5.stl"
+expect 1 '^FAIL: moved spheres clear of the walls \(STL .*wall_y6.stl, 2 triangles: 0 of 1 moved.*, 1 moved across a triangle' -- "${B[@]}" --after "$td/after_ok.dump" --wall-stl "$td/wall_y6.stl"
+expect 0 '^PASS: moved spheres clear of the walls \(STL .*wall_y6_beside.stl.*0 of 1 moved.*0 moved across a triangle' -- "${B[@]}" --after "$td/after_ok.dump" --wall-stl "$td/wall_y6_beside.stl"
+expect 1 '^FAIL: moved spheres clear of the walls \(STL .*wall_vertex.stl, 1 triangles: 1 of 1.*reaches 0.151 of' -- "${B[@]}" --after "$td/after_ok.dump" --wall-stl "$td/wall_vertex.stl"
+expect 0 '^PASS: moved spheres clear of the walls \(STL .*wall_vertex_clear.stl, 1 triangles: 0 of 1.*clear by 0.131 of' -- "${B[@]}" --after "$td/after_ok.dump" --wall-stl "$td/wall_vertex_clear.stl"
+expect 1 '^FAIL: moved spheres clear of the walls \(STL .*wall_edge.stl, 1 triangles: 1 of 1.*reaches 0.5 of' -- "${B[@]}" --after "$td/after_ok.dump" --wall-stl "$td/wall_edge.stl"
+# ... the path lying in the triangle's plane, through it (the end clear by 0.097 r)
+expect 1 '^FAIL: moved spheres clear of the walls \(STL .*wall_in_plane.stl, 1 triangles: 0 of 1 moved.*, 1 moved across a triangle; closest: id 2, clear by 0.0966' -- "${B[@]}" --after "$td/after_ok.dump" --wall-stl "$td/wall_in_plane.stl"
+expect 1 '^FAIL: moved spheres clear of the walls \(STL .*wall_x0.5.stl.*0 of 1 moved.*, 1 moved across a triangle' -- --before "$td/before_wrap.dump" --after "$td/after_wrap.dump" --wall-stl "$td/wall_x0.5.stl"
+expect 0 '^PASS: moved spheres clear of the walls \(STL .*wall_x5.stl.*0 of 1 moved.*, 0 moved across a triangle' -- --before "$td/before_wrap.dump" --after "$td/after_wrap.dump" --wall-stl "$td/wall_x5.stl"
+# no moved sphere: nothing to fail
+expect 0 '^PASS: moved spheres clear of the walls \(plane .*: 0 of 0 moved matrix spheres reach through by more than tol\)$' -- "${B[@]}" --after "$td/after_deleted.dump" --wall-plane 0 0 9 0 0 1
+# several rebar types (two crossing bars, types 2 and 3): with both, the bars'
+# overlap is no matrix on a bar, and a moved sphere of either bar fails
+expect 1 '^FAIL: no matrix sphere overlaps a bar \(1 unmoved' -- --before "$td/before_two_bars.dump" --after "$td/after_two_bars_ok.dump"
+expect 0 '^PASS: no matrix sphere overlaps a bar \(0 unmoved' -- --before "$td/before_two_bars.dump" --after "$td/after_two_bars_ok.dump" --rebar-type 2,3
+expect 0 '^PASS: rebar untouched \(0 missing, 0 moved' -- --before "$td/before_two_bars.dump" --after "$td/after_two_bars_moved.dump"
+expect 1 '^FAIL: rebar untouched \(0 missing, 1 moved' -- --before "$td/before_two_bars.dump" --after "$td/after_two_bars_moved.dump" --rebar-type 2,3
+expect 1 '^FAIL: rebar untouched \(0 missing, 1 moved' -- --before "$td/before_two_bars.dump" --after "$td/after_two_bars_moved.dump" --rebar-type 2 --rebar-type 3
+expect 0 '^atoms 4 matrix 2 max_matrix_rebar 0.5 max_matrix_matrix 0$' -- --stats "$td/before_two_bars.dump" --rebar-type 3,2 --rmin 1
+expect 0 '^atoms 4 matrix 3 ' -- --stats "$td/before_two_bars.dump" --rmin 1
 # rebar untouched
 expect 0 '^PASS: rebar untouched' -- "${B[@]}" --after "$td/after_ok.dump"
 expect 1 '^FAIL: rebar untouched \(0 missing, 1 moved' -- "${B[@]}" --after "$td/after_rebar_moved.dump"
@@ -150,6 +198,13 @@ cases=$((cases + 1))
 expect 2 'unknown option --frobnicate' -- --frobnicate
 expect 2 'cannot read' -- --before "$td/no_such.dump" --after "$td/after_ok.dump"
 expect 2 'need --before and --after' -- --before "$td/before.dump"
+expect 2 'a facet needs exactly three vertices' -- "${B[@]}" --after "$td/after_ok.dump" --wall-stl "$td/wall_bad.stl"
+expect 2 'no facet' -- "${B[@]}" --after "$td/after_ok.dump" --wall-stl "$td/before.dump"
+expect 2 'axis must be x, y or z' -- "${B[@]}" --after "$td/after_ok.dump" --wall-cylinder w 0 0 1 inside
+expect 2 'expected inside or outside' -- "${B[@]}" --after "$td/after_ok.dump" --wall-cylinder z 0 0 1 in
+expect 2 'the normal must not be zero' -- "${B[@]}" --after "$td/after_ok.dump" --wall-plane 0 0 0 0 0 0
+expect 2 'low bound must be below' -- "${B[@]}" --after "$td/after_ok.dump" --inside-box 0 10 5 5 0 10
+expect 2 'missing value for --inside-box' -- "${B[@]}" --after "$td/after_ok.dump" --inside-box 0 10 0
 
 echo "$((cases - failed)) of $cases cases passed"
 [ "$failed" -eq 0 ]
