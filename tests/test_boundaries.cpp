@@ -1048,7 +1048,7 @@ TEST(BoundariesBruteForce, AdmitsMatchesEveryWall)
   for (const Walls &w : wall_sets()) {
     const Boundaries b = w.build();
     Random rng(101);
-    const std::vector<Move> moves = random_moves(rng, 15000);
+    const std::vector<Move> moves = random_moves(rng, 3000);
     int admitted[6] = {}, refused[6] = {}, unsure = 0, wrong = 0;
     for (std::size_t i = 0; i < moves.size(); ++i) {
       const Move &m = moves[i];
@@ -1074,11 +1074,11 @@ TEST(BoundariesBruteForce, AdmitsMatchesEveryWall)
       const bool meets = w.name == "mixed" || (w.name == "mesh and floor" && k != 4) ||
                          (w.name == "floor alone" && k == 3);
       if (!meets) continue;
-      EXPECT_GT(admitted[k], 100) << w.name << " kind " << k;
-      EXPECT_GT(refused[k], 100) << w.name << " kind " << k;
+      EXPECT_GT(admitted[k], 10) << w.name << " kind " << k;
+      EXPECT_GT(refused[k], 10) << w.name << " kind " << k;
     }
-    EXPECT_GT(all_admitted, 300) << w.name;
-    EXPECT_GT(all_refused, 300) << w.name;
+    EXPECT_GT(all_admitted, 60) << w.name;
+    EXPECT_GT(all_refused, 60) << w.name;
   }
 }
 
@@ -1089,7 +1089,7 @@ TEST(BoundariesBruteForce, DistanceMatchesEveryWall)
   for (const Walls &w : wall_sets()) {
     const Boundaries b = w.build();
     Random rng(202);
-    for (const Move &m : random_moves(rng, 3000)) {
+    for (const Move &m : random_moves(rng, 600)) {
       for (const Vec3 &x : {m.c, m.from}) {
         const double d = b.distance(x);
         ASSERT_TRUE(std::isfinite(d)) << w.name;

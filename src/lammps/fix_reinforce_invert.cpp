@@ -570,17 +570,22 @@ bool FixReinforceInvert::shares_matrix_atoms(const Fix *other)
 // run stops here. fix wall/flow makes no wall. Collective.
 void FixReinforceInvert::check_walls()
 {
-  if (options.walls_ignore || region) return;
+  if (options.walls_ignore) return;
+  std::string skipped;
   for (int ifix = 0; ifix < modify->nfix; ++ifix) {
     const Fix *other = modify->fix[ifix];
     if (std::strncmp(other->style, "wall/", 5) != 0 || std::strcmp(other->style, "wall/flow") == 0)
       continue;
-    if (shares_matrix_atoms(other))
-      stop(FLERR, std::string("Fix reinforce/invert cannot see the walls of fix ") + other->id +
-                      " (" + other->style +
-                      "): give a region that holds the matrix (region keyword: whole spheres "
+    if (!shares_matrix_atoms(other)) continue;
+    const std::string which = std::string("fix ") + other->id + " (" + other->style + ")";
+    if (!region)
+      stop(FLERR, "Fix reinforce/invert cannot see the walls of " + which +
+                      ": give a region that holds the matrix (region keyword: whole spheres "
                       "are kept inside it) or walls ignore");
+    skipped += "; " + which + " not read: region " + options.region + " holds the matrix";
   }
+  if (!skipped.empty() && comm->me == 0)
+    utils::logmesg(lmp, "fix reinforce/invert: walls: none read" + skipped + "\n");
 }
 
 // The rebar of the other reinforce/invert fixes: never moved by this one.
