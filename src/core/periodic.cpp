@@ -7,6 +7,20 @@
 
 namespace reinforce {
 
+bool in_box(Vec3 x, const Domain &d)
+{
+  for (int k = 0; k < 3; ++k)
+    if (d.periodic[k] && (x[k] < d.lo[k] || x[k] >= d.hi[k])) return false;
+  return true;
+}
+
+bool in_subdomain(Vec3 x, const Domain &d)
+{
+  for (int k = 0; k < 3; ++k)
+    if (x[k] < d.sub_lo[k] || x[k] >= d.sub_hi[k]) return false;
+  return true;
+}
+
 Vec3 wrapped_into_box(Vec3 c, const Domain &domain)
 {
   for (int d = 0; d < 3; ++d) {

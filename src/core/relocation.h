@@ -106,6 +106,10 @@ struct Stats {
   void add(const Stats &o);
 };
 
+// The one copy of an atom that lies in the box (periodic images lie
+// outside it), and whether x lies in this process's subdomain.
+bool in_box(Vec3 x, const Domain &domain);
+bool in_subdomain(Vec3 x, const Domain &domain);
 // c wrapped into the box in its periodic dimensions, as the host wraps an
 // atom that left it.
 Vec3 wrapped_into_box(Vec3 c, const Domain &domain);

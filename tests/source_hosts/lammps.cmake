@@ -201,3 +201,36 @@ add_test(NAME src_lammps_error_restores_ghost_cutoff
                  ${CMAKE_CURRENT_BINARY_DIR}/error_restores_cutoff.data)
 set_tests_properties(src_lammps_error_restores_ghost_cutoff PROPERTIES TIMEOUT 120 ENVIRONMENT "${MPI_ENV}"
                      PASS_REGULAR_EXPRESSION "PASS: " FAIL_REGULAR_EXPRESSION "FAIL")
+
+# ---- LAMMPS since its August 2026 feature release names
+# NeighRequest::set_cutoff(double) set_cutoff_fixed(double). The plugin, made
+# by the same function as reinforceplugin (src/lammps/plugin: its sources,
+# include folders, definitions and link), against a copy of this tree's src/
+# with that method renamed (renamed_set_cutoff.sh tree). Not part of the
+# build: the test builds it, so that a compile error (the old call
+# ->set_cutoff(list_cutoff)) fails the test; it then checks which setter each
+# plugin calls (this one set_cutoff_fixed, reinforceplugin set_cutoff).
+set(RENAMED_TREE ${HOSTS}/lammps-renamed-set-cutoff)
+add_custom_command(OUTPUT ${RENAMED_TREE}/src/neigh_request.h
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/renamed_set_cutoff.sh tree
+          ${REINFORCE_LAMMPS_SOURCE_DIR}/src ${RENAMED_TREE}/src
+  DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/renamed_set_cutoff.sh ${REINFORCE_LAMMPS_SOURCE_DIR}/src/neigh_request.h
+  COMMENT "LAMMPS src/ with NeighRequest::set_cutoff renamed set_cutoff_fixed: ${RENAMED_TREE}/src")
+add_custom_target(lammps_renamed_set_cutoff_tree DEPENDS ${RENAMED_TREE}/src/neigh_request.h)
+function(reinforce_plugin_renamed_set_cutoff target)
+  set(REINFORCE_LAMMPS_SOURCE_DIR ${RENAMED_TREE})    # read by reinforce_lammps_plugin
+  reinforce_lammps_plugin(${target} ${REINFORCE_LAMMPS_SIZES} ${CMAKE_BINARY_DIR}/plugin-renamed-set-cutoff)
+  set_target_properties(${target} PROPERTIES EXCLUDE_FROM_ALL ON)
+  add_dependencies(${target} lammps_renamed_set_cutoff_tree)
+endfunction()
+reinforce_plugin_renamed_set_cutoff(reinforceplugin_renamed_set_cutoff)
+set(NM ${CMAKE_NM})
+if(NOT NM)
+  set(NM nm)
+endif()
+add_test(NAME src_lammps_plugin_builds_against_renamed_set_cutoff
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/renamed_set_cutoff.sh test ${CMAKE_BINARY_DIR}
+                 reinforceplugin_renamed_set_cutoff $<TARGET_FILE:reinforceplugin_renamed_set_cutoff>
+                 $<TARGET_FILE:reinforceplugin> ${NM})
+set_tests_properties(src_lammps_plugin_builds_against_renamed_set_cutoff PROPERTIES TIMEOUT 600
+                     PASS_REGULAR_EXPRESSION "PASS: " FAIL_REGULAR_EXPRESSION "FAIL")
