@@ -136,27 +136,33 @@ std::array<double, kOutputSize> output_vector(const Totals &t)
           static_cast<double>(t.rounds)};
 }
 
-Totals run_invocation(HostHooks &host, const FixOptions &options)
-{
-  const double start = host.wall_time();
-  host.refresh();
+namespace {
 
-  // Radius range of the matrix and the largest sphere, over all processes.
-  AtomArrays a = host.atoms();
-  double matrix_rmin = INFINITY, matrix_rmax = 0, largest = 0, rebar_count = 0, matrix_count = 0;
+// The matrix and the rebar as this invocation finds them, over all
+// processes; stops at an empty rebar group or a sphere of radius 0.
+struct AtomRanges {
+  double matrix_rmin = INFINITY, matrix_rmax = 0, largest = 0;
+  bool any_matrix = false;
+};
+
+AtomRanges check_atoms(HostHooks &host, const FixOptions &options)
+{
+  const AtomArrays a = host.atoms();
+  AtomRanges out;
+  double rebar_count = 0, matrix_count = 0;
   double bad_matrix = 0, bad_rebar = 0;    // an id with radius 0 (or not finite)
   for (int i = 0; i < a.nlocal; ++i) {
     const double r = a.radius[i];
     const bool good = r > 0 && std::isfinite(r);
-    if (good) largest = std::max(largest, r);
+    if (good) out.largest = std::max(out.largest, r);
     if (a.mask[i] & a.rebar_bit) {
       rebar_count += 1;
       if (!good && bad_rebar == 0) bad_rebar = static_cast<double>(a.tag[i]);
     } else if (is_matrix(a, i)) {
       matrix_count += 1;
       if (!good && bad_matrix == 0) bad_matrix = static_cast<double>(a.tag[i]);
-      matrix_rmin = std::min(matrix_rmin, r);
-      matrix_rmax = std::max(matrix_rmax, r);
+      out.matrix_rmin = std::min(out.matrix_rmin, r);
+      out.matrix_rmax = std::max(out.matrix_rmax, r);
     }
   }
   if (host.sum(rebar_count) == 0)
@@ -171,170 +177,189 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
     host.fail(format("Fix reinforce/invert: matrix atom %.0f has radius 0; matrix spheres need "
                      "a radius > 0",
                      bad_matrix));
-  matrix_rmin = -host.max(-matrix_rmin);
-  matrix_rmax = host.max(matrix_rmax);
-  largest = host.max(largest);
+  out.matrix_rmin = -host.max(-out.matrix_rmin);
+  out.matrix_rmax = host.max(out.matrix_rmax);
+  out.largest = host.max(out.largest);
+  out.any_matrix = host.sum(matrix_count) > 0;
+  return out;
+}
 
-  Totals totals;
-  const bool any_matrix = host.sum(matrix_count) > 0;
-  double unit = any_matrix ? matrix_rmin : 0;    // of the overlaps reported: the settings' rmin
-  double accepted_rmax = matrix_rmax;    // the settings' rmax: the top of the accepted radii
-  double search = 0, rebar_rmax = 0;     // for the unplaced line
-  bool bar_exceeds_box = false;
-  if (!any_matrix)
-    host.warn("Fix reinforce/invert has no matrix sphere (an atom of the fix group outside the "
-              "rebar group): nothing to relocate");
-  if (any_matrix) {
-    const Domain box = host.placement_domain();
-    const double diagonal = norm(box.hi - box.lo);
-    Settings settings;
-    try {
-      settings = make_settings(options, matrix_rmin, matrix_rmax, diagonal);
-    } catch (const OptionError &e) {
-      host.fail(e.what());
-    }
-    unit = settings.rmin;
-    accepted_rmax = settings.rmax;
-    if (settings.size == SizeMode::Fit && settings.rmin == settings.rmax)
-      host.log(format("fix reinforce/invert: the radius range is the single radius %g: with "
-                      "size fit only voids of exactly that radius fit; size keep (the default) "
-                      "or the radius keyword widen it\n",
-                      settings.rmin));
-    const Footprint reach = footprint(settings, matrix_rmax, largest);
-    const BlockLattice lattice =
-        make_block_lattice(box.lo, box.hi, box.periodic, reach.write + reach.read);
-    // The owner of a block's centre sees the whole block plus the read
-    // reach: how far a block reaches past a subdomain depends on where the
-    // subdomain's faces fall on the lattice, so the largest over processes.
-    const double beyond = host.max(lattice.reach_beyond(box.sub_lo, box.sub_hi));
-    const double cutoff = beyond + reach.read;
-    if (!std::isfinite(cutoff))
-      host.fail("Fix reinforce/invert: the reach of the relocation is not finite");
-    host.ensure_ghost_cutoff(cutoff);
-    // Everything a relocation reads lies within reach.read of a target's
-    // centre, and a target touches a bar: the view needs no more. Nor does
-    // it need more than the cutoff past the subdomain, whatever the host's
-    // ghosts hold: the results of the rounds reach this process only from
-    // the processes that can change something within that (exchange_partners).
-    const double margin = reach.read + 2 * largest;
-    Domain domain = host.placement_domain();
-    for (int d = 0; d < 3; ++d) {
-      domain.view_lo[d] = std::max(domain.view_lo[d], domain.sub_lo[d] - cutoff);
-      domain.view_hi[d] = std::min(domain.view_hi[d], domain.sub_hi[d] + cutoff);
-    }
-    const std::vector<int> partners = exchange_partners(host, domain, beyond, reach.write, cutoff);
+// The settings, the schedule, the ghost reach it needs (raised on the
+// host) and this process's view bounds and partners.
+struct Plan {
+  Settings settings;
+  Domain box, domain;
+  BlockLattice lattice;
+  std::vector<int> partners;
+  double margin = 0;    // the view: atoms within this of a rebar sphere
+};
 
-    a = host.atoms();
-    std::vector<int> local;
-    std::vector<Particle> view = make_view(a, margin, domain, local);
-    // Targets, and how many fall in each round of the schedule. With size
-    // keep the targets are split into size classes, largest first, each
-    // class a pass over the colours: the voids that hold a sphere as it is
-    // go to the largest targets of the whole scene first, not only of
-    // their block (docs/design.md, "Rounds").
-    //
-    // The overlap check: owned matrix spheres of the fix group that overlap
-    // a rebar sphere by more than tol * min radius. Each process marks only
-    // its own (owned) targets, so a list with rows for owned atoms is enough.
-    // The host's list answers when it has one that reaches matrix-rebar
-    // contact (source-built LAMMPS: its occasional full list); else, or when
-    // it is shorter (radii grew since the host set it up), the engine's grid
-    // over the view does (find_targets). Both decide each pair with
-    // spheres_overlap on the same coordinates, and both see every rebar
-    // sphere a target can overlap: a target touches a bar, so it is in the
-    // view, and the rebar spheres it overlaps lie within matrix rmax +
-    // rebar rmax of it (owned or ghost). So both give the same targets, in
-    // view order (tests: Invocation.HostListFindsTheSameTargets*, and
-    // src_lammps_same_as_packaged_host_list against lmp_reinforce).
-    for (const Particle &p : view)
-      if (p.role == Role::Rebar) rebar_rmax = std::max(rebar_rmax, p.r);
-    const double contact = matrix_rmax + host.max(rebar_rmax);
-    std::vector<std::size_t> overlapping;
-    if (host.build_neighbour_lists(contact)) {
-      std::vector<int> near;
-      for (std::size_t k = 0; k < view.size(); ++k) {
-        if (!view[k].owned || !is_matrix(a, local[k])) continue;
-        host.neighbours(local[k], near);
-        for (int j : near) {
-          if (!(a.mask[j] & a.rebar_bit)) continue;
-          if (spheres_overlap(view[k].x, view[k].r, Vec3{a.x[j][0], a.x[j][1], a.x[j][2]},
-                              a.radius[j], settings.tol)) {
-            overlapping.push_back(k);
-            break;
-          }
-        }
-      }
-    } else {
-      overlapping = find_targets(view, settings.tol);
-    }
-    std::vector<std::size_t> found;
-    double target_rmin = INFINITY, target_rmax = 0, left_alone = 0;
-    for (std::size_t k : overlapping) {
-      if (is_left_alone(a, local[k])) left_alone += 1;
-      if (!is_matrix(a, local[k])) continue;
-      host.set_pending(local[k], true);
-      found.push_back(k);
-      target_rmin = std::min(target_rmin, view[k].r);
-      target_rmax = std::max(target_rmax, view[k].r);
-    }
-    target_rmin = -host.max(-target_rmin);
-    target_rmax = host.max(target_rmax);
-    left_alone = host.sum(left_alone);
-    if (left_alone > 0)
-      host.log(format("fix reinforce/invert: left alone %.0f atoms that overlap the bars: they "
-                      "are rebar of ",
-                      left_alone) +
-               a.frozen_by + "\n");
-    rebar_rmax = host.max(rebar_rmax);
-    for (int d = 0; d < 3; ++d)
-      bar_exceeds_box = bar_exceeds_box || 2 * rebar_rmax > domain.hi[d] - domain.lo[d];
-    search = settings.search;
-    if (host.sum(static_cast<double>(found.size())) > 0) {
-      // The ghosts learn which atoms are targets (a forward communication:
-      // the atoms and their order stay as they are).
-      host.forward_pending();
-      a = host.atoms();
-      for (std::size_t k = 0; k < view.size(); ++k)
-        if (view[k].role != Role::Rebar)
-          view[k].role = a.pending[local[k]] ? Role::Target : Role::Matrix;
-      double largest_packing = 0;
-      totals.packing_overlaps = host.sum(static_cast<double>(
-          count_packing_overlaps(view, settings.tol, settings.rmin, largest_packing)));
-      totals.packing_max_overlap = host.max(largest_packing);
-      if (totals.packing_overlaps > 0)
-        host.log(format("fix reinforce/invert: the packing near the bars already has %.0f "
-                        "overlapping pairs (largest %.2e rmin); they are left as they are\n",
-                        totals.packing_overlaps, totals.packing_max_overlap));
-    }
-
-    // The stages on the schedule: relocation.
-    double view_largest = settings.rmax;
-    for (const Particle &p : view) view_largest = std::max(view_largest, p.r);
-    RelocationStage relocation(settings, domain, options.keep_unplaced, target_rmin, target_rmax,
-                               footprint(settings, target_rmax, view_largest).read, totals.stats);
-    std::vector<int> doomed;
-    const RoundsDone done =
-        run_rounds(host, relocation, {lattice, box, domain, partners}, std::move(view), local, a,
-                   doomed);
-    totals.rounds = done.rounds;
-    host.remove(doomed);
-    const double targets = host.sum(static_cast<double>(totals.stats.targets));
-    const double busiest = done.busiest, processes = done.processes, blocks = done.blocks;
-    if (totals.rounds > 0) {
-      // Balance: the targets over what the busiest process of each round
-      // would do if every process were as busy (1 = even).
-      char line[300];
-      std::snprintf(
-          line, sizeof line,
-          "fix reinforce/invert: schedule: %d rounds, %.0f targets in %.0f blocks, busiest "
-          "process %.0f targets over the rounds, balance %.2f over %.0f processes\n",
-          totals.rounds, targets, blocks, busiest, targets / (busiest * processes), processes);
-      host.log(line);
-    }
-    host.restore_ghost_cutoff();
+Plan prepare(HostHooks &host, const FixOptions &options, const AtomRanges &ranges)
+{
+  Plan plan;
+  plan.box = host.placement_domain();
+  const Domain &box = plan.box;
+  try {
+    plan.settings =
+        make_settings(options, ranges.matrix_rmin, ranges.matrix_rmax, norm(box.hi - box.lo));
+  } catch (const OptionError &e) {
+    host.fail(e.what());
   }
+  const Settings &settings = plan.settings;
+  if (settings.size == SizeMode::Fit && settings.rmin == settings.rmax)
+    host.log(format("fix reinforce/invert: the radius range is the single radius %g: with "
+                    "size fit only voids of exactly that radius fit; size keep (the default) "
+                    "or the radius keyword widen it\n",
+                    settings.rmin));
+  const Footprint reach = footprint(settings, ranges.matrix_rmax, ranges.largest);
+  plan.lattice = make_block_lattice(box.lo, box.hi, box.periodic, reach.write + reach.read);
+  // The owner of a block's centre sees the whole block plus the read
+  // reach: how far a block reaches past a subdomain depends on where the
+  // subdomain's faces fall on the lattice, so the largest over processes.
+  const double beyond = host.max(plan.lattice.reach_beyond(box.sub_lo, box.sub_hi));
+  const double cutoff = beyond + reach.read;
+  if (!std::isfinite(cutoff))
+    host.fail("Fix reinforce/invert: the reach of the relocation is not finite");
+  host.ensure_ghost_cutoff(cutoff);
+  // Everything a relocation reads lies within reach.read of a target's
+  // centre, and a target touches a bar: the view needs no more. Nor does
+  // it need more than the cutoff past the subdomain, whatever the host's
+  // ghosts hold: the results of the rounds reach this process only from
+  // the processes that can change something within that (exchange_partners).
+  plan.margin = reach.read + 2 * ranges.largest;
+  plan.domain = host.placement_domain();
+  for (int d = 0; d < 3; ++d) {
+    plan.domain.view_lo[d] = std::max(plan.domain.view_lo[d], plan.domain.sub_lo[d] - cutoff);
+    plan.domain.view_hi[d] = std::min(plan.domain.view_hi[d], plan.domain.sub_hi[d] + cutoff);
+  }
+  plan.partners = exchange_partners(host, plan.domain, beyond, reach.write, cutoff);
+  return plan;
+}
 
-  Stats &s = totals.stats;
+// The view with its targets marked (owned ones by this process, ghost ones
+// from their owners), and what the log needs about them.
+struct Marked {
+  AtomArrays a;
+  std::vector<int> local;
+  std::vector<Particle> view;
+  double target_rmin = INFINITY, target_rmax = 0, rebar_rmax = 0;
+};
+
+// The owned matrix spheres of the fix group that overlap a rebar sphere by
+// more than tol * min radius. Each process marks only its own (owned)
+// targets, so a list with rows for owned atoms is enough. The host's list
+// answers when it has one that reaches matrix-rebar contact (source-built
+// LAMMPS: its occasional full list); else, or when it is shorter (radii
+// grew since the host set it up), the engine's grid over the view does
+// (find_targets). Both decide each pair with spheres_overlap on the same
+// coordinates, and both see every rebar sphere a target can overlap: a
+// target touches a bar, so it is in the view, and the rebar spheres it
+// overlaps lie within matrix rmax + rebar rmax of it (owned or ghost). So
+// both give the same targets, in view order (tests:
+// Invocation.HostListFindsTheSameTargets*, and
+// src_lammps_same_as_packaged_host_list against lmp_reinforce).
+std::vector<std::size_t> overlapping_bars(HostHooks &host, const Marked &m, double contact,
+                                          double tol)
+{
+  if (!host.build_neighbour_lists(contact)) return find_targets(m.view, tol);
+  std::vector<std::size_t> overlapping;
+  std::vector<int> near;
+  const AtomArrays &a = m.a;
+  for (std::size_t k = 0; k < m.view.size(); ++k) {
+    if (!m.view[k].owned || !is_matrix(a, m.local[k])) continue;
+    host.neighbours(m.local[k], near);
+    for (int j : near) {
+      if (!(a.mask[j] & a.rebar_bit)) continue;
+      if (spheres_overlap(m.view[k].x, m.view[k].r, Vec3{a.x[j][0], a.x[j][1], a.x[j][2]},
+                          a.radius[j], tol)) {
+        overlapping.push_back(k);
+        break;
+      }
+    }
+  }
+  return overlapping;
+}
+
+Marked mark_targets(HostHooks &host, const Plan &plan, const AtomRanges &ranges, Totals &totals)
+{
+  const Settings &settings = plan.settings;
+  Marked m;
+  m.a = host.atoms();
+  m.view = make_view(m.a, plan.margin, plan.domain, m.local);
+  for (const Particle &p : m.view)
+    if (p.role == Role::Rebar) m.rebar_rmax = std::max(m.rebar_rmax, p.r);
+  const double contact = ranges.matrix_rmax + host.max(m.rebar_rmax);
+  std::size_t found = 0;
+  double left_alone = 0;
+  for (std::size_t k : overlapping_bars(host, m, contact, settings.tol)) {
+    if (is_left_alone(m.a, m.local[k])) left_alone += 1;
+    if (!is_matrix(m.a, m.local[k])) continue;
+    host.set_pending(m.local[k], true);
+    ++found;
+    m.target_rmin = std::min(m.target_rmin, m.view[k].r);
+    m.target_rmax = std::max(m.target_rmax, m.view[k].r);
+  }
+  m.target_rmin = -host.max(-m.target_rmin);
+  m.target_rmax = host.max(m.target_rmax);
+  left_alone = host.sum(left_alone);
+  if (left_alone > 0)
+    host.log(format("fix reinforce/invert: left alone %.0f atoms that overlap the bars: they "
+                    "are rebar of ",
+                    left_alone) +
+             m.a.frozen_by + "\n");
+  m.rebar_rmax = host.max(m.rebar_rmax);
+  if (host.sum(static_cast<double>(found)) == 0) return m;
+  // The ghosts learn which atoms are targets (a forward communication: the
+  // atoms and their order stay as they are).
+  host.forward_pending();
+  m.a = host.atoms();
+  for (std::size_t k = 0; k < m.view.size(); ++k)
+    if (m.view[k].role != Role::Rebar)
+      m.view[k].role = m.a.pending[m.local[k]] ? Role::Target : Role::Matrix;
+  double largest_packing = 0;
+  totals.packing_overlaps = host.sum(static_cast<double>(
+      count_packing_overlaps(m.view, settings.tol, settings.rmin, largest_packing)));
+  totals.packing_max_overlap = host.max(largest_packing);
+  if (totals.packing_overlaps > 0)
+    host.log(format("fix reinforce/invert: the packing near the bars already has %.0f "
+                    "overlapping pairs (largest %.2e rmin); they are left as they are\n",
+                    totals.packing_overlaps, totals.packing_max_overlap));
+  return m;
+}
+
+// The stages on the schedule (relocation), the deletions, and the
+// schedule line.
+void run_stages(HostHooks &host, const FixOptions &options, const Plan &plan, Marked &m,
+                Totals &totals)
+{
+  const Settings &settings = plan.settings;
+  double view_largest = settings.rmax;
+  for (const Particle &p : m.view) view_largest = std::max(view_largest, p.r);
+  RelocationStage relocation(settings, plan.domain, options.keep_unplaced, m.target_rmin,
+                             m.target_rmax, footprint(settings, m.target_rmax, view_largest).read,
+                             totals.stats);
+  std::vector<int> doomed;
+  const RoundsDone done =
+      run_rounds(host, relocation, {plan.lattice, plan.box, plan.domain, plan.partners},
+                 std::move(m.view), m.local, m.a, doomed);
+  totals.rounds = done.rounds;
+  host.remove(doomed);
+  const double targets = host.sum(static_cast<double>(totals.stats.targets));
+  if (totals.rounds == 0) return;
+  // Balance: the targets over what the busiest process of each round would
+  // do if every process were as busy (1 = even).
+  char line[300];
+  std::snprintf(line, sizeof line,
+                "fix reinforce/invert: schedule: %d rounds, %.0f targets in %.0f blocks, busiest "
+                "process %.0f targets over the rounds, balance %.2f over %.0f processes\n",
+                totals.rounds, targets, done.blocks, done.busiest,
+                targets / (done.busiest * done.processes), done.processes);
+  host.log(line);
+}
+
+// The totals over all processes: sums and maxima, each by one gather.
+void reduce_totals(HostHooks &host, Stats &s)
+{
   auto count = [](std::int64_t n) { return static_cast<double>(n); };
   const std::vector<double> sums = reduce_all(
       host,
@@ -358,6 +383,38 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
   s.max_overlap = maxima[0];
   s.max_kept_overlap = maxima[1];
   s.max_push = maxima[2];
+}
+
+}    // namespace
+
+Totals run_invocation(HostHooks &host, const FixOptions &options)
+{
+  const double start = host.wall_time();
+  host.refresh();
+  const AtomRanges ranges = check_atoms(host, options);
+  Totals totals;
+  // For the log: the unit of the overlaps (the settings' rmin), the accepted
+  // radius range, the search gap and the bars' largest radius.
+  double unit = ranges.any_matrix ? ranges.matrix_rmin : 0, accepted_rmax = ranges.matrix_rmax;
+  double search = 0, rebar_rmax = 0;
+  bool bar_exceeds_box = false;
+  if (!ranges.any_matrix) {
+    host.warn("Fix reinforce/invert has no matrix sphere (an atom of the fix group outside the "
+              "rebar group): nothing to relocate");
+  } else {
+    const Plan plan = prepare(host, options, ranges);
+    unit = plan.settings.rmin;
+    accepted_rmax = plan.settings.rmax;
+    search = plan.settings.search;
+    Marked marked = mark_targets(host, plan, ranges, totals);
+    rebar_rmax = marked.rebar_rmax;
+    for (int d = 0; d < 3; ++d)
+      bar_exceeds_box = bar_exceeds_box || 2 * rebar_rmax > plan.domain.hi[d] - plan.domain.lo[d];
+    run_stages(host, options, plan, marked, totals);
+    host.restore_ghost_cutoff();
+  }
+  Stats &s = totals.stats;
+  reduce_totals(host, s);
   totals.deleted = options.keep_unplaced ? 0 : static_cast<double>(s.unplaced);
   totals.kept = options.keep_unplaced ? static_cast<double>(s.unplaced) : 0;
   totals.seconds = host.max(host.wall_time() - start);
