@@ -114,28 +114,6 @@ std::string unplaced_line(const Stats &s, std::int64_t no_place, double rmin, do
 
 }    // namespace
 
-std::array<double, kOutputSize> output_vector(const Totals &t)
-{
-  const Stats &s = t.stats;
-  return {static_cast<double>(s.targets),
-          static_cast<double>(s.relocated),
-          t.deleted,
-          t.kept,
-          s.volume_before,
-          s.volume_after,
-          s.max_overlap,
-          static_cast<double>(s.solves),
-          t.seconds,
-          t.packing_overlaps,
-          s.max_kept_overlap,
-          s.volume_removed,
-          static_cast<double>(s.pushed),
-          s.max_push,
-          static_cast<double>(s.sweeps),
-          static_cast<double>(s.displaced),
-          static_cast<double>(t.rounds)};
-}
-
 namespace {
 
 // The matrix and the rebar as this invocation finds them, over all
@@ -357,32 +335,19 @@ void run_stages(HostHooks &host, const FixOptions &options, const Plan &plan, Ma
   host.log(line);
 }
 
-// The totals over all processes: sums and maxima, each by one gather.
-void reduce_totals(HostHooks &host, Stats &s)
+// The totals over all processes: the table's sums and maxima, each kind
+// by one gather.
+void reduce_totals(HostHooks &host, Totals &t)
 {
-  auto count = [](std::int64_t n) { return static_cast<double>(n); };
-  const std::vector<double> sums = reduce_all(
-      host,
-      {count(s.targets), count(s.relocated), count(s.unplaced), count(s.displaced), count(s.solves),
-       count(s.pushed), count(s.sweeps), s.volume_before, s.volume_after, s.volume_removed,
-       count(s.isolated)},
-      false);
-  s.targets = static_cast<std::int64_t>(sums[0]);
-  s.relocated = static_cast<std::int64_t>(sums[1]);
-  s.unplaced = static_cast<std::int64_t>(sums[2]);
-  s.displaced = static_cast<std::int64_t>(sums[3]);
-  s.solves = static_cast<std::int64_t>(sums[4]);
-  s.pushed = static_cast<std::int64_t>(sums[5]);
-  s.sweeps = static_cast<std::int64_t>(sums[6]);
-  s.volume_before = sums[7];
-  s.volume_after = sums[8];
-  s.volume_removed = sums[9];
-  s.isolated = static_cast<std::int64_t>(sums[10]);
-  const std::vector<double> maxima =
-      reduce_all(host, {s.max_overlap, s.max_kept_overlap, s.max_push}, true);
-  s.max_overlap = maxima[0];
-  s.max_kept_overlap = maxima[1];
-  s.max_push = maxima[2];
+  for (const Reduction kind : {Reduction::Sum, Reduction::Max}) {
+    std::vector<double> mine;
+    for (const TotalsField &f : totals_fields())
+      if (f.reduction == kind) mine.push_back(f.get(t));
+    const std::vector<double> all = reduce_all(host, mine, kind == Reduction::Max);
+    std::size_t k = 0;
+    for (const TotalsField &f : totals_fields())
+      if (f.reduction == kind) f.set(t, all[k++]);
+  }
 }
 
 }    // namespace
@@ -413,8 +378,8 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
     run_stages(host, options, plan, marked, totals);
     host.restore_ghost_cutoff();
   }
-  Stats &s = totals.stats;
-  reduce_totals(host, s);
+  reduce_totals(host, totals);
+  const Stats &s = totals.stats;
   totals.deleted = options.keep_unplaced ? 0 : static_cast<double>(s.unplaced);
   totals.kept = options.keep_unplaced ? static_cast<double>(s.unplaced) : 0;
   totals.seconds = host.max(host.wall_time() - start);

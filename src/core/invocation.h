@@ -5,6 +5,7 @@
 
 #include "fix_options.h"
 #include "relocation.h"
+#include "totals.h"
 
 #include <array>
 #include <cstdint>
@@ -99,28 +100,6 @@ public:
   virtual void warn(const std::string &message) = 0;
   virtual void fail(const std::string &message) = 0;    // does not return
 };
-
-// Totals of one invocation over all processes, as the fix reports them.
-struct Totals {
-  Stats stats;
-  double deleted = 0, kept = 0;
-  double seconds = 0;
-  int rounds = 0;    // rounds of the schedule that had work
-  // Matrix spheres near the bars that already overlapped each other before
-  // the relocation (left as they are; reported, not hidden).
-  double packing_overlaps = 0, packing_max_overlap = 0;
-};
-
-// The fix's global vector, f_ID[1] to f_ID[17]: targets, relocated,
-// deleted, kept, volume of the targets before, volume of the relocated
-// spheres after, largest residual overlap of a relocated or pushed sphere /
-// rmin, kernel solves, wall time (s), pairs of matrix spheres near the bars
-// that already overlapped, largest overlap of a kept target with a matrix
-// sphere / rmin, matrix volume removed, spheres pushed, largest push /
-// rmin, rearrangement sweeps, targets deleted as displaced by the bars,
-// rounds of the schedule that had work.
-constexpr int kOutputSize = 17;
-std::array<double, kOutputSize> output_vector(const Totals &t);
 
 // Runs one invocation: radius range, ghost reach, one refresh, targets, the
 // rounds of the block schedule (each round's results delivered to the

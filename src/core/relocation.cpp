@@ -88,24 +88,6 @@ private:
 
 }    // namespace
 
-void Stats::add(const Stats &o)
-{
-  targets += o.targets;
-  relocated += o.relocated;
-  unplaced += o.unplaced;
-  displaced += o.displaced;
-  volume_before += o.volume_before;
-  volume_after += o.volume_after;
-  volume_removed += o.volume_removed;
-  max_overlap = std::max(max_overlap, o.max_overlap);
-  max_kept_overlap = std::max(max_kept_overlap, o.max_kept_overlap);
-  solves += o.solves;
-  pushed += o.pushed;
-  max_push = std::max(max_push, o.max_push);
-  sweeps += o.sweeps;
-  isolated += o.isolated;
-}
-
 Footprint footprint(const Settings &s, double target_rmax, double largest_r)
 {
   Footprint f;

@@ -51,7 +51,7 @@ struct Settings {
   Choice choice = Choice::Closest;
   double tol = 1e-6;       // spheres overlap when d_ij > tol * min(r_i, r_j)
   int newton_steps = 1;    // Newton polish of each kernel solution
-  SizeMode size = SizeMode::Fit;
+  SizeMode size = SizeMode::Keep;
   double zone = 0;    // Keep: only matrix spheres within this gap of a bar are pushed
   double push = 0;    // Keep: largest displacement of a pushed sphere (0: no pushing)
   double displaced =
@@ -90,7 +90,8 @@ struct Footprint {
 };
 Footprint footprint(const Settings &s, double target_rmax, double largest_r);
 
-// Totals of one relocation call (the host sums them over processes and rounds).
+// Totals of one relocation call (summed over the calls of a process, then
+// combined over the processes as totals.h says).
 struct Stats {
   std::int64_t targets = 0, relocated = 0, unplaced = 0;
   std::int64_t displaced = 0;    // deleted without search: mostly inside the bars
@@ -103,7 +104,6 @@ struct Stats {
   double max_push = 0;            // largest displacement of a pushed sphere in one call, / rmin
   std::int64_t sweeps = 0;        // rearrangement sweeps
   std::int64_t isolated = 0;      // unplaced with fewer than four spheres within `search`
-  void add(const Stats &o);
 };
 
 // The one copy of an atom that lies in the box (periodic images lie
