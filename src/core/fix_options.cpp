@@ -33,6 +33,16 @@ int parse_int(const std::string &word, const std::string &what)
   return static_cast<int>(v);
 }
 
+// The value of keyword `key`, one of two words: true for the second.
+bool parse_either(const std::string &key, const std::string &word, const char *first,
+                  const char *second)
+{
+  if (word == first) return false;
+  if (word == second) return true;
+  throw OptionError(kIllegal + key + " must be '" + first + "' or '" + second + "', got '" + word +
+                    "'");
+}
+
 double positive(double v, const std::string &what)
 {
   if (!(v > 0)) throw OptionError(kIllegal + what + " must be > 0");
@@ -74,23 +84,11 @@ FixOptions parse_fix_arguments(const std::vector<std::string> &args)
       i += 2;
     } else if (key == "choose") {
       value(key, 1);
-      if (args[i + 1] == "first")
-        o.choice = Choice::First;
-      else if (args[i + 1] == "closest")
-        o.choice = Choice::Closest;
-      else
-        throw OptionError(kIllegal + "choose must be 'first' or 'closest', got '" + args[i + 1] +
-                          "'");
+      o.choice = parse_either(key, args[i + 1], "first", "closest") ? Choice::Closest : Choice::First;
       i += 2;
     } else if (key == "unplaced") {
       value(key, 1);
-      if (args[i + 1] == "delete")
-        o.keep_unplaced = false;
-      else if (args[i + 1] == "keep")
-        o.keep_unplaced = true;
-      else
-        throw OptionError(kIllegal + "unplaced must be 'delete' or 'keep', got '" + args[i + 1] +
-                          "'");
+      o.keep_unplaced = parse_either(key, args[i + 1], "delete", "keep");
       i += 2;
     } else if (key == "region") {
       value(key, 1);
@@ -109,12 +107,7 @@ FixOptions parse_fix_arguments(const std::vector<std::string> &args)
       i += 2;
     } else if (key == "size") {
       value(key, 1);
-      if (args[i + 1] == "keep")
-        o.size = SizeMode::Keep;
-      else if (args[i + 1] == "fit")
-        o.size = SizeMode::Fit;
-      else
-        throw OptionError(kIllegal + "size must be 'keep' or 'fit', got '" + args[i + 1] + "'");
+      o.size = parse_either(key, args[i + 1], "keep", "fit") ? SizeMode::Fit : SizeMode::Keep;
       i += 2;
     } else if (key == "zone") {
       value(key, 1);
@@ -141,13 +134,7 @@ FixOptions parse_fix_arguments(const std::vector<std::string> &args)
       i += 2;
     } else if (key == "walls") {
       value(key, 1);
-      if (args[i + 1] == "check")
-        o.walls_ignore = false;
-      else if (args[i + 1] == "ignore")
-        o.walls_ignore = true;
-      else
-        throw OptionError(kIllegal + "walls must be 'check' or 'ignore', got '" + args[i + 1] +
-                          "'");
+      o.walls_ignore = parse_either(key, args[i + 1], "check", "ignore");
       i += 2;
     } else {
       throw OptionError(kIllegal + "unknown keyword '" + key + "'");
