@@ -474,7 +474,7 @@ void expect_same_relocation(const ListHost &a, const Totals &ta, const ListHost 
 
 }    // namespace
 
-// Issue 11: the overlap check that finds the targets, answered by the
+// The overlap check that finds the targets, answered by the
 // host's list, gives the same targets as the engine's grid, and the same
 // relocation; the list is asked for matrix rmax + rebar rmax.
 TEST(Invocation, HostListFindsTheSameTargetsAsTheGrid)

@@ -1,4 +1,4 @@
-// Issue 12, item 18: a ghost cutoff the fix raised is put back when an ERROR
+// A ghost cutoff the fix raised is put back when an ERROR
 // unwinds through the relocation. LAMMPS built from source throws its
 // errors (LAMMPSException), so a program that runs LAMMPS as a library goes
 // on after one; its next run must not keep the raised cutoff.

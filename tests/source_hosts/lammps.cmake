@@ -99,7 +99,7 @@ if(TARGET lmp_reinforce)
     set_tests_properties(src_lammps_${tname} PROPERTIES TIMEOUT 300 FAIL_REGULAR_EXPRESSION "FAIL"
                          PASS_REGULAR_EXPRESSION "PASS: the same relocation")
   endforeach()
-  # Issue 11: with a pair style whose cutoff reaches matrix-rebar contact
+  # With a pair style whose cutoff reaches matrix-rebar contact
   # (in.scene_pair: gran/hooke), the plugin finds the targets with LAMMPS's
   # occasional full neighbor list (its log says so), lmp_reinforce with the
   # engine's grid: the same targets, statistics and atoms. Serially, and on
@@ -151,14 +151,14 @@ src_error(comm_mode_multi 1 "${R}requires comm_modify mode single" "${F} 0 bars"
           -var commmode multi -var neigh multi)
 src_error(zero_radius_matrix 1 "Fix reinforce/invert: matrix atom 1 has radius 0; matrix spheres need a radius > 0"
           "${F} 0 bars" -var matrixd 0)
-# Issue 12, items 5 and 16 (the same tests run on lmp_reinforce: ../adapters).
+# Refusals (the same tests run on lmp_reinforce: ../adapters).
 src_error(rebar_group_dynamic 1 "${R}rebar group 'dbars' is dynamic: make it static first (group dbars static)"
           "${F} 0 dbars" -var pre "if 1 then \"variable isbar atom type==2\" \"group dbars dynamic all var isbar\"")
 src_error(matrix_in_rigid_body 1 "${R}cannot move atoms of rigid bodies: matrix atoms belong to fix rb (rigid); leave the bodies out of the fix group"
           "${F} 0 bars" -var pre "fix rb all rigid single")
 src_error(matrix_in_rigid_small_body 2 "${R}cannot move atoms of rigid bodies: matrix atoms belong to fix rb (rigid/small); leave the bodies out of the fix group"
           "${F} 0 bars" -var pre "variable one atom 1" -var post "fix rb all rigid/small custom v_one")
-# Issue 12, item 19: N = 0 done, then its rebar group and region gone: the
+# N = 0 done, then its rebar group and region gone: the
 # next runs go on (no re-check in init()).
 add_test(NAME src_lammps_done_fix_never_stops_a_run
          COMMAND ${CMAKE_SOURCE_DIR}/tests/adapters/expect_success.sh ${PLUGIN_LMP} 1 ${ERROR_INPUT}
@@ -181,7 +181,7 @@ add_test(NAME src_lammps_package_make_install
 set_tests_properties(src_lammps_package_make_install PROPERTIES TIMEOUT 120
                      PASS_REGULAR_EXPRESSION "PASS: " FAIL_REGULAR_EXPRESSION "FAIL")
 
-# ---- Issue 12, item 18: an ERROR thrown during the relocation (this LAMMPS
+# ---- An ERROR thrown during the relocation (this LAMMPS
 # throws them) leaves the ghost cutoff as it was. A program linked with the
 # plain host's liblammps.a, loading the plugin.
 find_package(OpenMP REQUIRED COMPONENTS CXX)

@@ -17,7 +17,7 @@ add_test(NAME src_liggghts_error_unknown_keyword
                  "Illegal fix reinforce/invert command: unknown keyword 'foo'" -var fix "fix r all reinforce/invert 0 bars foo 1")
 set_tests_properties(src_liggghts_error_unknown_keyword PROPERTIES TIMEOUT 180
                      PASS_REGULAR_EXPRESSION "PASS: " FAIL_REGULAR_EXPRESSION "FAIL")
-# Issue 12, item 16: matrix spheres in a fix multisphere body refused (as on
+# Matrix spheres in a fix multisphere body refused (as on
 # the packaged path, ../adapters).
 add_test(NAME src_liggghts_error_matrix_in_multisphere_body
          COMMAND ${SCRIPTS}/expect_error.sh ${CMAKE_SOURCE_DIR}/tests/adapters/screen_devnull.sh 1

@@ -5,7 +5,7 @@
 # f_ID[1..8] and f_ID[10] identical (the STATS line), and the written atoms
 # identical (check_scene --same).
 #   same_as_packaged.sh SOURCE_LMP PACKAGED_LMP TOOLS_DIR "keywords" MAKE_SCENE_ARGS...
-# Optional (issue 11), from the environment:
+# Optional, from the environment:
 #   SAME_INPUT=FILE      another input with the same variables and STATS line
 #                        (default tests/stability/in.scene)
 #   SAME_VARS="-var ..." more variables for both runs (e.g. periodic bounds)
