@@ -51,6 +51,88 @@ double positive(double v, const std::string &what)
 
 }    // namespace
 
+namespace {
+
+// A keyword: how many values follow it and what they set.
+struct Keyword {
+  const char *name;
+  std::size_t values;
+  void (*apply)(FixOptions &o, const std::string *v);
+};
+
+const Keyword kKeywords[] = {
+    {"radius", 2,
+     [](FixOptions &o, const std::string *v) {
+       o.rmin = positive(parse_double(v[0], "radius rmin"), "radius rmin");
+       o.rmax = positive(parse_double(v[1], "radius rmax"), "radius rmax");
+       if (o.rmin > o.rmax) throw OptionError(kIllegal + "radius rmin must be <= rmax");
+       o.radius_set = true;
+     }},
+    {"search", 1,
+     [](FixOptions &o, const std::string *v) {
+       o.search = positive(parse_double(v[0], "search"), "search");
+       o.search_set = true;
+     }},
+    {"tries", 1,
+     [](FixOptions &o, const std::string *v) {
+       o.tries = parse_int(v[0], "tries");
+       if (o.tries <= 0) throw OptionError(kIllegal + "tries must be > 0");
+     }},
+    {"choose", 1,
+     [](FixOptions &o, const std::string *v) {
+       o.choice = parse_either("choose", v[0], "first", "closest") ? Choice::Closest : Choice::First;
+     }},
+    {"unplaced", 1,
+     [](FixOptions &o, const std::string *v) {
+       o.keep_unplaced = parse_either("unplaced", v[0], "delete", "keep");
+     }},
+    {"region", 1, [](FixOptions &o, const std::string *v) { o.region = v[0]; }},
+    {"tol", 1,
+     [](FixOptions &o, const std::string *v) {
+       o.tol = parse_double(v[0], "tol");
+       if (!(o.tol >= kMinTol) || o.tol >= 1)
+         throw OptionError(kIllegal + "tol must be in [1e-10, 1)");
+     }},
+    {"polish", 1,
+     [](FixOptions &o, const std::string *v) {
+       o.polish = parse_int(v[0], "polish");
+       if (o.polish < 0 || o.polish > 10) throw OptionError(kIllegal + "polish must be in 0..10");
+     }},
+    {"size", 1,
+     [](FixOptions &o, const std::string *v) {
+       o.size = parse_either("size", v[0], "keep", "fit") ? SizeMode::Fit : SizeMode::Keep;
+     }},
+    {"zone", 1,
+     [](FixOptions &o, const std::string *v) {
+       o.zone = parse_double(v[0], "zone");
+       if (!(o.zone >= 0)) throw OptionError(kIllegal + "zone must be >= 0");
+       o.zone_set = true;
+     }},
+    {"push", 1,
+     [](FixOptions &o, const std::string *v) {
+       o.push = parse_double(v[0], "push");
+       if (!(o.push >= 0)) throw OptionError(kIllegal + "push must be >= 0");
+       o.push_set = true;
+     }},
+    {"displaced", 1,
+     [](FixOptions &o, const std::string *v) {
+       o.displaced_set = true;
+       if (v[0] == "none") {
+         o.displaced = 2;    // above any volume fraction: never
+         return;
+       }
+       o.displaced = parse_double(v[0], "displaced");
+       if (!(o.displaced > 0) || o.displaced > 1)
+         throw OptionError(kIllegal + "displaced must be in (0, 1] or 'none'");
+     }},
+    {"walls", 1,
+     [](FixOptions &o, const std::string *v) {
+       o.walls_ignore = parse_either("walls", v[0], "check", "ignore");
+     }},
+};
+
+}    // namespace
+
 FixOptions parse_fix_arguments(const std::vector<std::string> &args)
 {
   if (args.size() < 2) throw OptionError(kIllegal + "expected N and a rebar group ID");
@@ -58,87 +140,16 @@ FixOptions parse_fix_arguments(const std::vector<std::string> &args)
   o.every = parse_int(args[0], "N");
   if (o.every < 0) throw OptionError(kIllegal + "N must be >= 0");
   o.rebar_group = args[1];
-  std::size_t i = 2;
-  auto value = [&](const std::string &key, std::size_t count) {
-    if (i + count >= args.size())
+  for (std::size_t i = 2; i < args.size();) {
+    const std::string &key = args[i];
+    const Keyword *keyword = nullptr;
+    for (const Keyword &k : kKeywords)
+      if (key == k.name) keyword = &k;
+    if (!keyword) throw OptionError(kIllegal + "unknown keyword '" + key + "'");
+    if (i + keyword->values >= args.size())
       throw OptionError(kIllegal + "missing value for keyword '" + key + "'");
-  };
-  while (i < args.size()) {
-    const std::string key = args[i];
-    if (key == "radius") {
-      value(key, 2);
-      o.rmin = positive(parse_double(args[i + 1], "radius rmin"), "radius rmin");
-      o.rmax = positive(parse_double(args[i + 2], "radius rmax"), "radius rmax");
-      if (o.rmin > o.rmax) throw OptionError(kIllegal + "radius rmin must be <= rmax");
-      o.radius_set = true;
-      i += 3;
-    } else if (key == "search") {
-      value(key, 1);
-      o.search = positive(parse_double(args[i + 1], "search"), "search");
-      o.search_set = true;
-      i += 2;
-    } else if (key == "tries") {
-      value(key, 1);
-      o.tries = parse_int(args[i + 1], "tries");
-      if (o.tries <= 0) throw OptionError(kIllegal + "tries must be > 0");
-      i += 2;
-    } else if (key == "choose") {
-      value(key, 1);
-      o.choice = parse_either(key, args[i + 1], "first", "closest") ? Choice::Closest : Choice::First;
-      i += 2;
-    } else if (key == "unplaced") {
-      value(key, 1);
-      o.keep_unplaced = parse_either(key, args[i + 1], "delete", "keep");
-      i += 2;
-    } else if (key == "region") {
-      value(key, 1);
-      o.region = args[i + 1];
-      i += 2;
-    } else if (key == "tol") {
-      value(key, 1);
-      o.tol = parse_double(args[i + 1], "tol");
-      if (!(o.tol >= kMinTol) || o.tol >= 1)
-        throw OptionError(kIllegal + "tol must be in [1e-10, 1)");
-      i += 2;
-    } else if (key == "polish") {
-      value(key, 1);
-      o.polish = parse_int(args[i + 1], "polish");
-      if (o.polish < 0 || o.polish > 10) throw OptionError(kIllegal + "polish must be in 0..10");
-      i += 2;
-    } else if (key == "size") {
-      value(key, 1);
-      o.size = parse_either(key, args[i + 1], "keep", "fit") ? SizeMode::Fit : SizeMode::Keep;
-      i += 2;
-    } else if (key == "zone") {
-      value(key, 1);
-      o.zone = parse_double(args[i + 1], "zone");
-      if (!(o.zone >= 0)) throw OptionError(kIllegal + "zone must be >= 0");
-      o.zone_set = true;
-      i += 2;
-    } else if (key == "push") {
-      value(key, 1);
-      o.push = parse_double(args[i + 1], "push");
-      if (!(o.push >= 0)) throw OptionError(kIllegal + "push must be >= 0");
-      o.push_set = true;
-      i += 2;
-    } else if (key == "displaced") {
-      value(key, 1);
-      o.displaced_set = true;
-      if (args[i + 1] == "none") {
-        o.displaced = 2;    // above any volume fraction: never
-      } else {
-        o.displaced = parse_double(args[i + 1], "displaced");
-        if (!(o.displaced > 0) || o.displaced > 1)
-          throw OptionError(kIllegal + "displaced must be in (0, 1] or 'none'");
-      }
-      i += 2;
-    } else if (key == "walls") {
-      value(key, 1);
-      o.walls_ignore = parse_either(key, args[i + 1], "check", "ignore");
-      i += 2;
-    } else {
-      throw OptionError(kIllegal + "unknown keyword '" + key + "'");
-    }
+    keyword->apply(o, &args[i + 1]);
+    i += 1 + keyword->values;
   }
   return o;
 }
