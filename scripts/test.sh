@@ -10,18 +10,43 @@
 # REINFORCE_QUICK=1 runs only the first.
 #
 # It stops with a non-zero status when the install or the build fails (no
-# test is run on binaries left from before), and fails when a host (LAMMPS,
-# LIGGGHTS) was not built or registered no test, unless it is left out on
-# purpose, by name: REINFORCE_SKIP=liggghts (or lammps; also sanitizer, fuzz:
-# parts), or -DREINFORCE_LIGGGHTS=OFF in REINFORCE_CMAKE_ARGS or in the build
-# directory's CMake cache. The end lists the tests run per part and names
-# every part skipped; the closing line, read by CI, is
+# test is run on binaries left from before). Only REINFORCE_SKIP leaves a
+# host (lammps, liggghts) or a part (sanitizer, fuzz, source) out, by name:
+# REINFORCE_SKIP=liggghts. Every host not skipped is configured ON
+# explicitly (-DREINFORCE_LAMMPS=ON -DREINFORCE_LIGGGHTS=ON, whatever the
+# build directory's CMake cache holds), and the command fails, naming it,
+# when such a host is configured OFF anyway (by REINFORCE_CMAKE_ARGS) or was
+# not built. Each part must also run at least a minimum of tests of each of
+# its families (scripts/test_families.txt, checked by count_families.sh on
+# `ctest -N` with the part's selection, the arguments given to this command
+# included): a family short fails the command by name. The end lists the
+# tests run per part and names every part skipped; the closing line, read by
+# CI, is
 #   total: N passed, M failed
 set -uo pipefail
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+
+# skip_reason NAME: prints why NAME (a host, or a part: sanitizer, fuzz,
+# source) is left out on purpose, or nothing. Only REINFORCE_SKIP does it: a
+# REINFORCE_<HOST>=OFF in REINFORCE_CMAKE_ARGS or in a CMake cache left from
+# an earlier configure never skips a host.
+skip_reason() {
+  local h=$1
+  if [[ ",${REINFORCE_SKIP:-}," =~ [,[:space:]]$h[,[:space:]] ]]; then
+    echo "REINFORCE_SKIP=${REINFORCE_SKIP}"
+  fi
+}
+upper() { tr '[:lower:]' '[:upper:]' <<<"$1"; }
+
+# The hosts not skipped are configured ON explicitly, before the caller's
+# REINFORCE_CMAKE_ARGS (a later -D wins: an OFF there fails the host check).
+host_on=()
+for h in lammps liggghts; do
+  [ -n "$(skip_reason "$h")" ] || host_on+=("-DREINFORCE_$(upper "$h")=ON")
+done
 # setup.sh runs as its own process: sourced after `||`, bash would ignore its
 # `set -e`, and its options would leak into this script.
-if ! bash "$top/scripts/setup.sh"; then
+if ! REINFORCE_CMAKE_ARGS="${host_on[*]} ${REINFORCE_CMAKE_ARGS:-}" bash "$top/scripts/setup.sh"; then
   echo "test: FAILED: setup (package install, configure or build) failed: no test was run"
   echo "total: 0 passed, 1 failed"
   exit 1
@@ -33,24 +58,6 @@ jobs=${REINFORCE_TEST_JOBS:-2}
 passed=0 failed=0
 parts=()       # one line per part run: "name: N tests, P passed, F failed (groups)"
 skipped=()     # one line per part or host left out, with the reason
-
-# skip_reason NAME: prints why NAME (a host, or a part: sanitizer, fuzz) is
-# left out on purpose, or nothing.
-skip_reason() {
-  local h=$1 H v
-  H=$(tr '[:lower:]' '[:upper:]' <<<"$h")
-  if [[ ",${REINFORCE_SKIP:-}," =~ [,[:space:]]$h[,[:space:]] ]]; then
-    echo "REINFORCE_SKIP=${REINFORCE_SKIP}"
-  elif [ "$h" != lammps ] && [ "$h" != liggghts ]; then
-    return 0    # a part: only REINFORCE_SKIP leaves it out
-  elif [[ " ${REINFORCE_CMAKE_ARGS:-} " =~ [[:space:]]-DREINFORCE_${H}(:BOOL)?=(OFF|0|NO|FALSE|off|no|false)[[:space:]] ]]; then
-    echo "-DREINFORCE_${H}=OFF in REINFORCE_CMAKE_ARGS"
-  elif [ -f "$REINFORCE_BUILD/CMakeCache.txt" ] &&
-       v=$(sed -n "s/^REINFORCE_${H}:BOOL=//p" "$REINFORCE_BUILD/CMakeCache.txt") &&
-       [[ "$v" =~ ^(OFF|0|NO|FALSE|off|no|false)$ ]]; then
-    echo "REINFORCE_${H}=OFF in $REINFORCE_BUILD/CMakeCache.txt"
-  fi
-}
 
 run_ctest() {    # run_ctest BUILD_DIR [ctest args]; the part's name: $part (default: the directory's)
   local dir=$1 out name=${part:-$(basename "$1")}
@@ -87,9 +94,31 @@ summary() {
   fi
 }
 
-# Every host expected (not skipped by name) must be built and have tests.
+# check_families PART DIR [HOST...] -- [ctest selection]: each family of
+# PART (scripts/test_families.txt; those of the HOSTs given, and those of no
+# host) has at least its minimum of tests among the ones the part runs
+# (`ctest -N` in DIR with the selection). Each family short is a failure,
+# named on a "test: FAILED: part PART: family ..." line.
+check_families() {
+  local p=$1 dir=$2 hs=() list short
+  shift 2
+  while [ $# -gt 0 ] && [ "$1" != "--" ]; do hs+=("$1"); shift; done
+  [ $# -gt 0 ] && shift
+  list=$(mktemp)
+  (cd "$dir" && ctest -N "$@") >"$list" 2>&1
+  bash "$top/scripts/count_families.sh" "$p" "${hs[@]}" <"$list"
+  short=$?
+  rm -f "$list"
+  if [ "$short" -ne 0 ]; then
+    failed=$((failed + short))
+    parts+=("$p: FAILED: families short of tests, or no family table (the test: FAILED lines above)")
+  fi
+}
+
+# Every host expected (not skipped by name) must be configured ON and built;
+# its families of tests are then checked with the part's.
 host_exe=(lammps src/lammps/lmp_reinforce liggghts src/liggghts/liggghts_reinforce)
-exclude=()
+exclude=() hosts=()
 for ((k = 0; k < ${#host_exe[@]}; k += 2)); do
   h=${host_exe[k]} exe=$REINFORCE_BUILD/${host_exe[k + 1]}
   why=$(skip_reason "$h")
@@ -100,18 +129,26 @@ for ((k = 0; k < ${#host_exe[@]}; k += 2)); do
     [ "$h" = lammps ] && exclude+=("^stability_" "^bench_quick$")
     continue
   fi
-  n=$( (cd "$REINFORCE_BUILD" && ctest -N -R "^${h}_") 2>/dev/null | sed -nE 's/^Total Tests: ([0-9]+)/\1/p')
-  if [ ! -x "$exe" ] || [ "${n:-0}" -eq 0 ]; then
-    echo "test: FAILED: host $h expected but $( [ -x "$exe" ] && echo "no ${h}_ test is registered" ||
-          echo "$exe was not built (not found at configure time?)"). Install it, or skip it by name:" \
-         "REINFORCE_SKIP=$h"
+  H=$(upper "$h")
+  v=$(sed -n "s/^REINFORCE_${H}:[A-Z]*=//p" "$REINFORCE_BUILD/CMakeCache.txt" 2>/dev/null | tail -1)
+  if ! [[ "$v" =~ ^(ON|1|YES|TRUE|Y|on|yes|true|y)$ ]]; then
+    echo "test: FAILED: host $h expected but configured REINFORCE_${H}=${v:-unset} in $REINFORCE_BUILD" \
+         "(REINFORCE_CMAKE_ARGS=${REINFORCE_CMAKE_ARGS:-}): only REINFORCE_SKIP=$h leaves a host out"
+    parts+=("$h: FAILED: host configured OFF, its tests did not run")
+    failed=$((failed + 1))
+  elif [ ! -x "$exe" ]; then
+    echo "test: FAILED: host $h expected but $exe was not built (not found at configure time?)." \
+         "Install it, or skip it by name: REINFORCE_SKIP=$h"
     parts+=("$h: FAILED: host missing, its tests did not run")
     failed=$((failed + 1))
+  else
+    hosts+=("$h")    # its families are checked below
   fi
 done
 
 echo "== main build: all tests"
 exclude_re=$(IFS='|'; echo "${exclude[*]}")
+check_families main "$REINFORCE_BUILD" "${hosts[@]}" -- ${exclude_re:+-E "$exclude_re"} "$@"
 part=main run_ctest "$REINFORCE_BUILD" ${exclude_re:+-E "$exclude_re"} "$@"
 
 if [ "${REINFORCE_QUICK:-0}" = 1 ]; then
@@ -122,17 +159,19 @@ if [ "${REINFORCE_QUICK:-0}" != 1 ] && why=$(skip_reason sanitizer) && [ -n "$wh
 elif [ "${REINFORCE_QUICK:-0}" != 1 ]; then
   echo "== sanitizer build (ASan + UBSan): core tests and MPI scenes"
   san="$top/build-sanitize"
-  san_args=(-DREINFORCE_LIGGGHTS=OFF) san_targets=(core_tests make_scene check_scene)
-  san_tests="^Kernel|^Engine|^Fix|^Schedule|^Summary|^Invocation|^stability_periodic_2x2x1_np4$|^stability_stiff|^lammps_identical_keep_2x2x1_np4$"
+  san_args=(-DREINFORCE_LIGGGHTS=OFF) san_targets=(core_tests make_scene check_scene) san_hosts=()
+  san_tests="^[A-Z][A-Za-z0-9]*\\.|^stability_periodic_2x2x1_np4$|^stability_stiff|^lammps_identical_keep_2x2x1_np4$|^lammps_scene_eight_thin_subdomains_search_0.02_np8$"
   if [ -n "$(skip_reason lammps)" ]; then
-    san_args+=(-DREINFORCE_LAMMPS=OFF) san_tests="^Kernel|^Engine|^Fix|^Schedule|^Summary|^Invocation"
+    san_args+=(-DREINFORCE_LAMMPS=OFF) san_tests="^[A-Z][A-Za-z0-9]*\\."
     skipped+=("sanitizer: LAMMPS scenes (lammps skipped)")
   else
-    san_targets+=(lmp_reinforce)
+    # ON explicitly: an OFF left in build-sanitize's cache must not drop the scenes
+    san_args+=(-DREINFORCE_LAMMPS=ON) san_targets+=(lmp_reinforce) san_hosts+=(lammps)
   fi
   if cmake -S "$top" -B "$san" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DREINFORCE_SANITIZE=ON \
        "${san_args[@]}" >/dev/null &&
      cmake --build "$san" -j"${REINFORCE_BUILD_JOBS:-$(nproc)}" --target "${san_targets[@]}"; then
+    check_families sanitizer "$san" "${san_hosts[@]}" -- -R "${REINFORCE_SANITIZE_TESTS:-$san_tests}"
     # Open MPI's own allocations are not ours to judge: no leak check.
     ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
       part=sanitizer run_ctest "$san" -R "${REINFORCE_SANITIZE_TESTS:-$san_tests}"
@@ -149,6 +188,7 @@ elif [ "${REINFORCE_QUICK:-0}" != 1 ]; then
   if CC=clang CXX=clang++ cmake -S "$top" -B "$fuzz" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
        -DREINFORCE_FUZZ=ON -DREINFORCE_TESTS=OFF -DREINFORCE_LAMMPS=OFF -DREINFORCE_LIGGGHTS=OFF \
        >/dev/null && cmake --build "$fuzz" -j"${REINFORCE_BUILD_JOBS:-$(nproc)}"; then
+    check_families fuzz "$fuzz" --
     part=fuzz run_ctest "$fuzz"
   else
     echo "fuzz build failed"; failed=$((failed + 1)); parts+=("fuzz: FAILED: build failed")
@@ -168,6 +208,10 @@ elif why=$(skip_reason source) && [ -n "$why" ]; then
 else
   echo "== source-built hosts: LAMMPS (plugin, in-tree package, bigbig), LIGGGHTS (drop-in)"
   if bash "$top/tests/source_hosts/prepare.sh" "$top/build-source"; then
+    src_hosts=()
+    [ -z "${REINFORCE_LAMMPS_SOURCE:-}" ] || src_hosts+=(lammps_source)
+    [ -z "${REINFORCE_LIGGGHTS_SOURCE:-}" ] || src_hosts+=(liggghts_source)
+    check_families source "$top/build-source" "${src_hosts[@]}" -- -R '^src_'
     part=source run_ctest "$top/build-source" -R '^src_'
   else
     echo "source-built hosts: build failed"; failed=$((failed + 1))

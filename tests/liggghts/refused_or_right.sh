@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # A communication set-up under which the fix could miss ghost neighbours
 # (communicate multi, communicate group): the run must either stop with one
-# ERROR line from fix reinforce/invert, or write a correct result (check_scene).
-# Never a silent overlap.
-#   refused_or_right.sh NAME NP BUILD_DIR -- MAKE_SCENE_ARGS -- LIGGGHTS_VARS -- CHECK_SCENE_ARGS
+# ERROR line whose message is exactly REFUSAL (the whole line but for
+# "ERROR: " and the source location "(file:line)"), or write a correct
+# result (check_scene). Never a silent overlap, nor a stop by another ERROR.
+#   refused_or_right.sh NAME NP BUILD_DIR REFUSAL -- MAKE_SCENE_ARGS -- LIGGGHTS_VARS -- CHECK_SCENE_ARGS
 set -uo pipefail
-name=$1 np=$2 build=$3
-shift 3
+name=$1 np=$2 build=$3 refusal=$4
+shift 4
 [ "$1" = "--" ] && shift
 make=()
 while [ "$1" != "--" ]; do make+=("$1"); shift; done
@@ -30,7 +31,8 @@ if [ "$status" -ne 0 ]; then
   line=$(grep '^ERROR' "$work/log" | head -1)
   echo "exit $status: $line"
   [ "$errors" -eq 1 ] || { echo "FAIL: $errors ERROR lines, expected one"; exit 1; }
-  grep -q 'reinforce/invert' <<<"$line" || { echo "FAIL: the run stopped, but not by the fix"; exit 1; }
+  message=$(sed -E 's/^ERROR: //; s/ \([^()]*:[0-9]+\)$//' <<<"$line")
+  [ "$message" = "$refusal" ] || { echo "FAIL: the ERROR message is not exactly: $refusal"; exit 1; }
   echo "PASS $name np=$np: refused"
   exit 0
 fi

@@ -2,9 +2,11 @@
 # A set-up the fix may refuse or must get right (e.g. ghost atoms only of
 # one group: neighbours the fix cannot see). Runs tests/lammps/in.scene on a
 # make_scene scene once; passes when LAMMPS stops with exactly one ERROR
-# line matching REFUSAL (an extended regular expression) and writes no
-# after.dump, or when it runs and the checker passes on what it wrote. A
-# run that completes with a wrong result fails.
+# line whose message is exactly REFUSAL (the whole line but for "ERROR: "
+# and the source location "(file:line)", as expect_error.sh with
+# EXPECT_EXACT=1) and writes no after.dump, or when it runs and the checker
+# passes on what it wrote. A run that completes with a wrong result fails,
+# and so does a stop by any other ERROR.
 #   refused_or_right.sh NAME NP BUILD_DIR REFUSAL -- MAKE_SCENE_ARGS -- LMP_VARS -- CHECK_ARGS
 set -uo pipefail
 name=$1 np=$2 build=$3 refusal=$4
@@ -33,7 +35,9 @@ if [ "$status" -ne 0 ]; then
   echo "exit $status: $line"
   [ "$status" -ne 124 ] || { echo "FAIL: $name np=$np: the run hung"; exit 1; }
   [ "$errors" -eq 1 ] || { echo "FAIL: $name np=$np: $errors ERROR lines"; exit 1; }
-  grep -Eq -- "$refusal" <<<"$line" || { echo "FAIL: $name np=$np: the ERROR line does not say: $refusal"; exit 1; }
+  message=$(sed -E 's/^ERROR: //; s/ \([^()]*:[0-9]+\)$//' <<<"$line")
+  [ "$message" = "$refusal" ] ||
+    { echo "FAIL: $name np=$np: the ERROR message is not exactly: $refusal"; exit 1; }
   [ ! -s "$work/after.dump" ] || ! grep -q '^ITEM:' "$work/after.dump" \
     || { echo "FAIL: $name np=$np: refused after writing a result"; exit 1; }
   echo "PASS $name np=$np: refused"

@@ -41,6 +41,9 @@
 # one process (-var procs "1 1 1", and -var setup "$SCENE_REFERENCE_SETUP"
 # when that is set: a setup command that needs several processes), as a
 # third file.
+# SCENE_LOG_POST="command args": run as `command args LOG [REFERENCE_LOG]` at
+# the end, on what the fix logged (the run's log, and with SCENE_REFERENCE=1
+# that of the 1-process run), e.g. ghost_cutoff.sh.
 set -euo pipefail
 name=$1 exe=$2 np=$3 input=$4 checker=$5
 shift 5
@@ -206,16 +209,20 @@ awk -v tol=1e-9 '
     if (bad) { print "FAIL: displace/atom disagrees with the dumps for " bad " atoms"; exit 1 }
     if (has) print "PASS: displace/atom agrees with the dumps (per-atom data followed the atoms)"
   }' "$work/a/before.dump" "$work/a/after.dump" || exit 1
+reference=() reference_log=()
+if [ -n "${SCENE_POST:-}${SCENE_LOG_POST:-}" ] && [ "${SCENE_REFERENCE:-0}" = 1 ]; then
+  ref_args=(-var procs "1 1 1")    # the same input on one process (the first -var of a name wins)
+  [ -n "${SCENE_REFERENCE_SETUP:-}" ] && ref_args+=(-var setup "$SCENE_REFERENCE_SETUP")
+  run "$work/ref" 1 "${ref_args[@]}"
+  reference=("$work/ref/after.dump") reference_log=("$work/ref/log")
+fi
 if [ -n "${SCENE_POST:-}" ]; then
-  reference=()
-  if [ "${SCENE_REFERENCE:-0}" = 1 ]; then    # the same input on one process
-    ref_args=(-var procs "1 1 1")               # (the first -var of a name wins)
-    [ -n "${SCENE_REFERENCE_SETUP:-}" ] && ref_args+=(-var setup "$SCENE_REFERENCE_SETUP")
-    run "$work/ref" 1 "${ref_args[@]}"
-    reference=("$work/ref/after.dump")
-  fi
   # shellcheck disable=SC2086    # a command and its arguments
   ${SCENE_POST} "$work/a/before.dump" "$work/a/after.dump" "${reference[@]}" || fail "$SCENE_POST"
+fi
+if [ -n "${SCENE_LOG_POST:-}" ]; then
+  # shellcheck disable=SC2086    # a command and its arguments
+  ${SCENE_LOG_POST} "$log" "${reference_log[@]}" || fail "$SCENE_LOG_POST"
 fi
 
 run "$work/b"

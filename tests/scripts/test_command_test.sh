@@ -8,8 +8,13 @@
 #    no test run, and the closing total line;
 #  * a missing host (a fake project that builds lmp_reinforce but not
 #    liggghts_reinforce): non-zero, the host named; skipped by name
-#    (REINFORCE_SKIP=liggghts, or -DREINFORCE_LIGGGHTS=OFF): zero, the skip
-#    named, the host's tests not run;
+#    (REINFORCE_SKIP=liggghts): zero, the skip named, the host's tests not
+#    run. Nothing else skips it: -DREINFORCE_LIGGGHTS=OFF in
+#    REINFORCE_CMAKE_ARGS fails the command, naming REINFORCE_SKIP; an OFF
+#    left in the build's CMake cache is configured ON again (the host's tests
+#    run, or the host is missing);
+#  * a family of tests short of its minimum (scripts/test_families.txt; the
+#    fake project's own table): non-zero, the family named;
 #  * a failing test: counted (the command goes on to the end: per-part
 #    counts, "total: N passed, M failed"), non-zero.
 #   test_command_test.sh
@@ -31,12 +36,20 @@ printf '#!/bin/sh\n[ "$1" = update ] && exit 0\necho "E: Unable to locate packag
 for d in bin_ok bin_broken_apt; do printf '#!/bin/sh\nexec "$@"\n' >"$w/$d/sudo"; done
 chmod +x "$w"/bin_*/*
 
-# A fake project: lmp_reinforce and a passing lammps_ test always; with
-# -DFAKE_LIGGGHTS=ON also liggghts_reinforce and a liggghts_ test (failing
-# with -DFAKE_LIGGGHTS_FAILS=ON); -DFAKE_BROKEN=ON: the configure fails.
+# A fake project: lmp_reinforce and a passing lammps_ test always, and a
+# unit test (none with -DFAKE_NO_UNIT=ON); with -DFAKE_LIGGGHTS=ON also
+# liggghts_reinforce and a liggghts_ test (failing with
+# -DFAKE_LIGGGHTS_FAILS=ON); -DFAKE_BROKEN=ON: the configure fails. Its
+# family table asks for one test of each.
 fake=$w/fake
 mkdir -p "$fake/scripts"
-cp "$top/scripts/setup.sh" "$top/scripts/test.sh" "$fake/scripts/"
+cp "$top/scripts/setup.sh" "$top/scripts/test.sh" "$top/scripts/count_families.sh" "$fake/scripts/"
+cat >"$fake/scripts/test_families.txt" <<'EOF'
+# part host min regex family (the fake project's)
+main  -         1  ^[A-Z][A-Za-z0-9]*\.  fake unit tests
+main  lammps    1  ^lammps_             fake lammps tests
+main  liggghts  1  ^liggghts_           fake liggghts tests
+EOF
 cat >"$fake/CMakeLists.txt" <<'EOF'
 cmake_minimum_required(VERSION 3.16)
 project(fake NONE)
@@ -45,6 +58,7 @@ option(REINFORCE_LIGGGHTS "" ON)
 option(FAKE_LIGGGHTS "" OFF)
 option(FAKE_LIGGGHTS_FAILS "" OFF)
 option(FAKE_BROKEN "" OFF)
+option(FAKE_NO_UNIT "" OFF)
 if(FAKE_BROKEN)
   message(FATAL_ERROR "deliberately broken configure")
 endif()
@@ -55,7 +69,9 @@ function(fake_exe path)
 endfunction()
 fake_exe(src/lammps/lmp_reinforce)
 add_test(NAME lammps_fake COMMAND true)
-add_test(NAME Unit.Fake COMMAND true)
+if(NOT FAKE_NO_UNIT)
+  add_test(NAME Unit.Fake COMMAND true)
+endif()
 if(REINFORCE_LIGGGHTS AND FAKE_LIGGGHTS)
   fake_exe(src/liggghts/liggghts_reinforce)
   if(FAKE_LIGGGHTS_FAILS)
@@ -128,8 +144,22 @@ expect host_missing nonzero "$fake" bin_ok -- \
 expect host_skipped_by_name 0 "$fake" bin_ok REINFORCE_SKIP=liggghts -- \
   '^  main: 2 tests, 2 passed, 0 failed' \
   '^  skipped: liggghts tests \(skipped on purpose: REINFORCE_SKIP=liggghts\)' '^total: 2 passed, 0 failed$'
-expect host_off_in_cmake 0 "$fake" bin_ok REINFORCE_CMAKE_ARGS=-DREINFORCE_LIGGGHTS=OFF -- \
-  '^  skipped: liggghts tests \(skipped on purpose: -DREINFORCE_LIGGGHTS=OFF' '^total: 2 passed, 0 failed$'
+# Only REINFORCE_SKIP skips: an OFF in REINFORCE_CMAKE_ARGS fails the command...
+expect host_off_in_cmake nonzero "$fake" bin_ok REINFORCE_CMAKE_ARGS=-DREINFORCE_LIGGGHTS=OFF -- \
+  '^test: FAILED: host liggghts expected but configured REINFORCE_LIGGGHTS=OFF .*only REINFORCE_SKIP=liggghts' \
+  '^  liggghts: FAILED: host configured OFF' '!^  skipped: liggghts' '^total: 2 passed, 1 failed$'
+expect host_off_in_cmake_skipped 0 "$fake" bin_ok REINFORCE_SKIP=liggghts REINFORCE_CMAKE_ARGS=-DREINFORCE_LIGGGHTS=OFF -- \
+  '^  skipped: liggghts tests \(skipped on purpose: REINFORCE_SKIP=liggghts\)' '^total: 2 passed, 0 failed$'
+# ... and an OFF left in the build's cache by an earlier configure is
+# configured ON again: the host's tests run, or its absence fails the command.
+cmake -S "$fake" -B "$w/build_stale_cache_built" -DREINFORCE_LIGGGHTS=OFF -DFAKE_LIGGGHTS=ON >/dev/null
+expect stale_cache_built 0 "$fake" bin_ok -- \
+  '^  main: 3 tests, 3 passed, 0 failed \(lammps 1, liggghts 1, unit 1\)' '^total: 3 passed, 0 failed$' \
+  '!^  skipped: liggghts'
+cmake -S "$fake" -B "$w/build_stale_cache_missing" -DREINFORCE_LIGGGHTS=OFF >/dev/null
+expect stale_cache_missing nonzero "$fake" bin_ok -- \
+  '^test: FAILED: host liggghts expected but .*liggghts_reinforce was not built.*REINFORCE_SKIP=liggghts' \
+  '!^  skipped: liggghts' '^total: 2 passed, 1 failed$'
 expect host_present 0 "$fake" bin_ok REINFORCE_CMAKE_ARGS=-DFAKE_LIGGGHTS=ON -- \
   '^  main: 3 tests, 3 passed, 0 failed \(lammps 1, liggghts 1, unit 1\)' '^total: 3 passed, 0 failed$' \
   '!^  skipped: liggghts'
@@ -137,7 +167,14 @@ expect host_present 0 "$fake" bin_ok REINFORCE_CMAKE_ARGS=-DFAKE_LIGGGHTS=ON -- 
 expect host_built_skipped 0 "$fake" bin_ok REINFORCE_SKIP=liggghts \
   "REINFORCE_CMAKE_ARGS=-DFAKE_LIGGGHTS=ON -DFAKE_LIGGGHTS_FAILS=ON" -- \
   '^total: 2 passed, 0 failed$' '!liggghts_fake'
-# 3. A failing test is counted, and the command goes on to its summary.
+# 3. A family of tests short of its minimum fails the command, named (the
+# fake's unit test not registered; liggghts skipped, so that nothing else
+# fails).
+expect family_short nonzero "$fake" bin_ok REINFORCE_SKIP=liggghts REINFORCE_CMAKE_ARGS=-DFAKE_NO_UNIT=ON -- \
+  "^test: FAILED: part main: family 'fake unit tests' .*: 0 tests, expected at least 1$" \
+  '^  family main: fake lammps tests: 1 tests' '!family main: fake liggghts' \
+  '^  main: FAILED: families short' '^total: 1 passed, 1 failed$'
+# 4. A failing test is counted, and the command goes on to its summary.
 expect test_fails nonzero "$fake" bin_ok "REINFORCE_CMAKE_ARGS=-DFAKE_LIGGGHTS=ON -DFAKE_LIGGGHTS_FAILS=ON" -- \
   '^  main: 3 tests, 2 passed, 1 failed' '^== tests run per part' '^total: 2 passed, 1 failed$'
 
