@@ -160,9 +160,9 @@ elif [ "${REINFORCE_QUICK:-0}" != 1 ]; then
   echo "== sanitizer build (ASan + UBSan): core tests and MPI scenes"
   san="$top/build-sanitize"
   san_args=(-DREINFORCE_LIGGGHTS=OFF) san_targets=(core_tests make_scene check_scene) san_hosts=()
-  san_tests="^[A-Z][A-Za-z0-9]*\\.|^stability_periodic_2x2x1_np4$|^stability_stiff|^lammps_identical_keep_2x2x1_np4$|^lammps_scene_eight_thin_subdomains_search_0.02_np8$"
+  san_tests="^Kernel|^Engine|^Fix|^Schedule|^Summary|^Invocation|^CellGrid|^RoundRecords|^Totals|^stability_periodic_2x2x1_np4$|^stability_stiff|^lammps_identical_keep_2x2x1_np4$|^lammps_scene_eight_thin_subdomains_search_0.02_np8$"
   if [ -n "$(skip_reason lammps)" ]; then
-    san_args+=(-DREINFORCE_LAMMPS=OFF) san_tests="^[A-Z][A-Za-z0-9]*\\."
+    san_args+=(-DREINFORCE_LAMMPS=OFF) san_tests="^Kernel|^Engine|^Fix|^Schedule|^Summary|^Invocation|^CellGrid|^RoundRecords|^Totals"
     skipped+=("sanitizer: LAMMPS scenes (lammps skipped)")
   else
     # ON explicitly: an OFF left in build-sanitize's cache must not drop the scenes
