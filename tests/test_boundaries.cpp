@@ -557,8 +557,10 @@ TEST(BoundariesTriangleDistance, SliversWithinTheStatedTolerance)
       std::snprintf(buf, sizeof buf, ": distance %.17g, convex search %.17g, bound %.3g", d,
                     searched, bound);
       // Measured against each case's bound: over and under are multiples of it.
-      if ((d - searched) / bound > over) over = (d - searched) / bound, worst_over = describe(x, t) + buf;
-      if ((searched - d) / bound > under) under = (searched - d) / bound, worst_under = describe(x, t) + buf;
+      if ((d - searched) / bound > over)
+        over = (d - searched) / bound, worst_over = describe(x, t) + buf;
+      if ((searched - d) / bound > under)
+        under = (searched - d) / bound, worst_under = describe(x, t) + buf;
     }
   }
   EXPECT_LE(over, 1) << "above the truth by " << over << " bounds: " << worst_over;

@@ -56,7 +56,8 @@ TEST(RoundRecords, MalformedBuffersAreRefused)
     EXPECT_FALSE(decode_records(bad, out)) << kind;
   }
   // ID halves that are not whole numbers below 2^32.
-  for (double half : {-1.0, 4294967296.0, 0.5, static_cast<double>(NAN), static_cast<double>(INFINITY)}) {
+  for (double half :
+       {-1.0, 4294967296.0, 0.5, static_cast<double>(NAN), static_cast<double>(INFINITY)}) {
     std::vector<double> bad = flat;
     bad[0] = half;
     EXPECT_FALSE(decode_records(bad, out)) << half;

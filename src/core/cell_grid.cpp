@@ -1,6 +1,5 @@
 #include "cell_grid.h"
 
-
 namespace reinforce {
 
 namespace {

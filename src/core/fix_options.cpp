@@ -80,7 +80,8 @@ const Keyword kKeywords[] = {
      }},
     {"choose", 1,
      [](FixOptions &o, const std::string *v) {
-       o.choice = parse_either("choose", v[0], "first", "closest") ? Choice::Closest : Choice::First;
+       o.choice =
+           parse_either("choose", v[0], "first", "closest") ? Choice::Closest : Choice::First;
      }},
     {"unplaced", 1,
      [](FixOptions &o, const std::string *v) {

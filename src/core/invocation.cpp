@@ -85,8 +85,7 @@ std::string unplaced_line(const Stats &s, std::int64_t no_place, double rmin, do
   std::string line = part;
   std::vector<std::string> why;
   if (bar_exceeds_box) {
-    std::snprintf(part, sizeof part, "a bar sphere (radius %g) is larger than the box",
-                  rebar_rmax);
+    std::snprintf(part, sizeof part, "a bar sphere (radius %g) is larger than the box", rebar_rmax);
     why.emplace_back(part);
   }
   if (s.isolated > 0) {

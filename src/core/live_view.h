@@ -88,7 +88,8 @@ public:
         for (std::size_t c : copies) view_[c].role = Role::Matrix;
         continue;
       }
-      if (copies.empty() && what != RecordKind::Placed) continue;    // neither seen nor to be seen here
+      if (copies.empty() && what != RecordKind::Placed)
+        continue;    // neither seen nor to be seen here
       Particle moved;
       if (!copies.empty()) moved = view_[copies.front()];
       // The in-box copy, if this process has it, is where a push starts.

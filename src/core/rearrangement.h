@@ -30,8 +30,8 @@ public:
   // started. On success returns the new sphere's index, adds the pushes to
   // `pushes` (by atom ID) and the moved spheres to `touched`; on failure
   // puts everything back and returns -1.
-  int make_room(Vec3 c, Vec3 x0, double r0, std::int64_t id,
-                std::map<std::int64_t, Vec3> &pushes, std::vector<int> &touched);
+  int make_room(Vec3 c, Vec3 x0, double r0, std::int64_t id, std::map<std::int64_t, Vec3> &pushes,
+                std::vector<int> &touched);
 
 private:
   Scene &scene_;

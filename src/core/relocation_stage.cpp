@@ -4,9 +4,8 @@
 
 namespace reinforce {
 
-RelocationStage::RelocationStage(const Settings &settings, const Domain &domain,
-                                 bool keep_unplaced, double target_rmin, double target_rmax,
-                                 double read, Stats &stats)
+RelocationStage::RelocationStage(const Settings &settings, const Domain &domain, bool keep_unplaced,
+                                 double target_rmin, double target_rmax, double read, Stats &stats)
     : settings_(settings), domain_(domain), keep_unplaced_(keep_unplaced),
       classes_(settings.size == SizeMode::Keep ? kSizeClasses : 1), target_rmax_(target_rmax),
       class_width_((target_rmax - target_rmin) / classes_), read_(read), stats_(stats)

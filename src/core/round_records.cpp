@@ -22,9 +22,9 @@ void encode_records(const std::vector<RoundRecord> &records, std::vector<double>
 {
   for (const RoundRecord &r : records) {
     const std::uint64_t bits = static_cast<std::uint64_t>(r.id);
-    out.insert(out.end(), {static_cast<double>(bits >> 32), static_cast<double>(bits & 0xffffffffu),
-                           static_cast<double>(static_cast<int>(r.kind)), r.v.x, r.v.y, r.v.z,
-                           r.r});
+    out.insert(out.end(),
+               {static_cast<double>(bits >> 32), static_cast<double>(bits & 0xffffffffu),
+                static_cast<double>(static_cast<int>(r.kind)), r.v.x, r.v.y, r.v.z, r.r});
   }
 }
 
@@ -43,8 +43,8 @@ bool decode_records(const std::vector<double> &in, std::vector<RoundRecord> &out
         !whole_below(in[k + 2], 4))
       return false;
     const int kind = static_cast<int>(in[k + 2]);
-    const std::uint64_t bits = static_cast<std::uint64_t>(in[k]) << 32 |
-                               static_cast<std::uint64_t>(in[k + 1]);
+    const std::uint64_t bits =
+        static_cast<std::uint64_t>(in[k]) << 32 | static_cast<std::uint64_t>(in[k + 1]);
     RoundRecord r;
     r.id = static_cast<std::int64_t>(bits);
     r.kind = static_cast<RecordKind>(kind);

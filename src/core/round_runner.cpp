@@ -23,9 +23,15 @@ void apply_to_host(HostHooks &host, const AtomArrays &a,
     if (it == owned.end()) continue;
     const int i = it->second;
     switch (rec.kind) {
-    case RecordKind::Placed: host.move(i, rec.v, rec.r); break;
-    case RecordKind::Deleted: doomed.push_back(i); break;
-    case RecordKind::Kept: host.set_pending(i, false); break;
+    case RecordKind::Placed:
+      host.move(i, rec.v, rec.r);
+      break;
+    case RecordKind::Deleted:
+      doomed.push_back(i);
+      break;
+    case RecordKind::Kept:
+      host.set_pending(i, false);
+      break;
     case RecordKind::Pushed:
       host.move(i, Vec3{a.x[i][0], a.x[i][1], a.x[i][2]} + rec.v, a.radius[i]);
       break;
@@ -215,7 +221,8 @@ RoundsDone run_rounds(HostHooks &host, Stage &stage, const RoundPlan &plan,
       if (previous >= 0 && touches(lattice, plan.box, *it, previous, other_blocks))
         waiting.push_back(*it);
     std::vector<RoundRecord> records;
-    if (static_cast<std::size_t>(last - first) > waiting.size()) run_part(r, waiting, false, records);
+    if (static_cast<std::size_t>(last - first) > waiting.size())
+      run_part(r, waiting, false, records);
     if (previous >= 0) collect();
     if (!waiting.empty()) run_part(r, waiting, true, records);
     apply_to_host(host, a, owned, records, doomed);

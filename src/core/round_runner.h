@@ -22,9 +22,9 @@ struct RoundPlan {
 
 // What the rounds of a stage did, over all processes.
 struct RoundsDone {
-  int rounds = 0;         // rounds that had work
-  double blocks = 0;      // blocks with work, summed over the rounds
-  double busiest = 0;     // the busiest process's work, summed over the rounds
+  int rounds = 0;        // rounds that had work
+  double blocks = 0;     // blocks with work, summed over the rounds
+  double busiest = 0;    // the busiest process's work, summed over the rounds
   double processes = 0;
 };
 

@@ -7,8 +7,8 @@ namespace reinforce {
 namespace {
 
 // A field of the totals or of their stats, as a double.
-#define REINFORCE_TOTAL(member) \
-  [](const Totals &t) { return static_cast<double>(t.member); }, \
+#define REINFORCE_TOTAL(member)                                                                    \
+  [](const Totals &t) { return static_cast<double>(t.member); },                                   \
       [](Totals &t, double v) { t.member = static_cast<decltype(t.member)>(v); }
 
 }    // namespace
@@ -36,8 +36,7 @@ const std::array<TotalsField, kTotalsFields> &totals_fields()
       {"rounds", Reduction::Global, 17, REINFORCE_TOTAL(rounds)},
       {"unplaced", Reduction::Sum, 0, REINFORCE_TOTAL(stats.unplaced)},
       {"unplaced with no neighbours", Reduction::Sum, 0, REINFORCE_TOTAL(stats.isolated)},
-      {"largest overlap before / rmin", Reduction::Global, 0,
-       REINFORCE_TOTAL(packing_max_overlap)},
+      {"largest overlap before / rmin", Reduction::Global, 0, REINFORCE_TOTAL(packing_max_overlap)},
   }};
   return fields;
 }

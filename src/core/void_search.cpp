@@ -96,8 +96,7 @@ bool VoidSearch::own_size_void(Vec3 x0, double r0, Void &best)
   for_each_triple(static_cast<int>(n), s_.tries, [&](int a, int b, int c) {
     if (near[c].gap - margin >= best.score) return true;
     // Two spheres whose gap exceeds 2 r0 cannot both touch it.
-    if (gap[a * n + b] > 2 * r0 || gap[a * n + c] > 2 * r0 || gap[b * n + c] > 2 * r0)
-      return false;
+    if (gap[a * n + b] > 2 * r0 || gap[a * n + c] > 2 * r0 || gap[b * n + c] > 2 * r0) return false;
     const Sphere group[3] = {scene_.sphere(near[a].index), scene_.sphere(near[b].index),
                              scene_.sphere(near[c].index)};
     Vec3 found[2];
@@ -105,8 +104,8 @@ bool VoidSearch::own_size_void(Vec3 x0, double r0, Void &best)
     stats_.solves++;
     for (int k = 0; k < nfound; ++k) {
       const double shift = norm(found[k] - x0);
-      if (shift > max_shift || shift >= best.score || !admissible(x0, found[k], r0, domain_, s_.tol) ||
-          overlaps_one_of(near, found[k], r0))
+      if (shift > max_shift || shift >= best.score ||
+          !admissible(x0, found[k], r0, domain_, s_.tol) || overlaps_one_of(near, found[k], r0))
         continue;
       double deepest;
       if (scene_.fits(found[k], r0, s_.tol, deepest)) best = {found[k], r0, shift};

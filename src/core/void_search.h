@@ -49,8 +49,10 @@ private:
   const Domain &domain_;
   Stats &stats_;
 
-  template <class Range, class F> void for_each_solution(Vec3 x0, double r0, Range &&wanted, F &&take);
-  bool overlaps_one_of(const std::vector<Candidate> &near, Vec3 c, double r, double slack = 0) const;
+  template <class Range, class F>
+  void for_each_solution(Vec3 x0, double r0, Range &&wanted, F &&take);
+  bool overlaps_one_of(const std::vector<Candidate> &near, Vec3 c, double r,
+                       double slack = 0) const;
 };
 
 }    // namespace reinforce

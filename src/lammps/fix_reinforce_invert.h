@@ -80,8 +80,8 @@ private:
   int rebar_group = -1, rebar_bit = 0;
   class Region *region = nullptr;
   std::vector<int> pending;
-  bool invoked = false;               // the relocation at the start of the first run is done
-  bool setup_seen = false;            // setup_pre_exchange ran in this run's setup
+  bool invoked = false;       // the relocation at the start of the first run is done
+  bool setup_seen = false;    // setup_pre_exchange ran in this run's setup
   // Atoms moved by the latest invocation in the group of each fix that
   // anchors per-atom positions (spring/self), by fix index.
   std::vector<std::pair<int, double>> anchored;

@@ -335,13 +335,34 @@ bool same_place(const Dump &box, const Atom &a, const Atom &b)
 struct Vec {
   double x = 0, y = 0, z = 0;
 };
-Vec operator-(Vec a, Vec b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-Vec operator+(Vec a, Vec b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-Vec operator*(double s, Vec a) { return {s * a.x, s * a.y, s * a.z}; }
-double dot(Vec a, Vec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-Vec cross(Vec a, Vec b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-double norm(Vec a) { return std::sqrt(dot(a, a)); }
-Vec vec(const double *x) { return {x[0], x[1], x[2]}; }
+Vec operator-(Vec a, Vec b)
+{
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+Vec operator+(Vec a, Vec b)
+{
+  return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+Vec operator*(double s, Vec a)
+{
+  return {s * a.x, s * a.y, s * a.z};
+}
+double dot(Vec a, Vec b)
+{
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+Vec cross(Vec a, Vec b)
+{
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+double norm(Vec a)
+{
+  return std::sqrt(dot(a, a));
+}
+Vec vec(const double *x)
+{
+  return {x[0], x[1], x[2]};
+}
 
 struct Triangle {
   Vec a, b, c;
@@ -366,7 +387,8 @@ double point_triangle_distance(Vec p, const Triangle &t)
   const Vec ab = t.b - t.a, ac = t.c - t.a, n = cross(ab, ac);
   if (!(dot(n, n) > 0)) {
     double d = INFINITY;
-    for (const auto &e : {std::make_pair(t.a, t.b), std::make_pair(t.b, t.c), std::make_pair(t.c, t.a)})
+    for (const auto &e :
+         {std::make_pair(t.a, t.b), std::make_pair(t.b, t.c), std::make_pair(t.c, t.a)})
       d = std::min(d, norm(p - closest_on_segment(p, e.first, e.second)));
     return d;
   }
@@ -427,8 +449,8 @@ bool segment_crosses_triangle(Vec p0, Vec p1, const Triangle &t)
   if ((d0 > 0 && d1 > 0) || (d0 < 0 && d1 < 0)) return false;
   if (d0 == 0 && d1 == 0) {    // in the triangle's plane: 2-d, dropping the normal's largest axis
     const int drop = std::fabs(n.x) >= std::fabs(n.y) && std::fabs(n.x) >= std::fabs(n.z) ? 0
-                     : std::fabs(n.y) >= std::fabs(n.z)                                    ? 1
-                                                                                           : 2;
+                     : std::fabs(n.y) >= std::fabs(n.z)                                   ? 1
+                                                                                          : 2;
     auto flat = [drop](Vec v, double *out) {
       const double c[3] = {v.x, v.y, v.z};
       for (int k = 0, m = 0; k < 3; ++k)
@@ -470,7 +492,8 @@ std::vector<Triangle> read_stl(const std::string &path)
       v.push_back({to_double(f[1], where), to_double(f[2], where), to_double(f[3], where)});
     } else if (k == "endfacet") {
       if (!in_facet || v.size() != 3)
-        bad(where + ": a facet needs exactly three vertices (has " + std::to_string(v.size()) + ")");
+        bad(where + ": a facet needs exactly three vertices (has " + std::to_string(v.size()) +
+            ")");
       tris.push_back({v[0], v[1], v[2]});
       in_facet = false;
     }
@@ -489,20 +512,21 @@ std::string numg(double v)
 
 struct Wall {
   enum Kind { Plane, Cylinder, Stl, Box } kind = Plane;
-  Vec point, normal;                   // plane: a point, the unit normal (the matrix side)
-  int axis = 2;                        // cylinder: 0, 1, 2 = x, y, z
+  Vec point, normal;                    // plane: a point, the unit normal (the matrix side)
+  int axis = 2;                         // cylinder: 0, 1, 2 = x, y, z
   double c1 = 0, c2 = 0, radius = 0;    // cylinder: the axis through (c1, c2), its radius
-  bool inside = true;                  // cylinder: the matrix inside
-  std::vector<Triangle> triangles;     // stl
+  bool inside = true;                   // cylinder: the matrix inside
+  std::vector<Triangle> triangles;      // stl
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};    // box (may be infinite)
-  std::string label;                   // what the check line calls it
+  std::string label;                              // what the check line calls it
 
   // How far a sphere (centre x, radius r) reaches through the wall, as a
   // fraction of r: > 0 reaches through, <= 0 clear by that gap.
   double depth(Vec x, double r) const
   {
     switch (kind) {
-    case Plane: return (r - dot(x - point, normal)) / r;
+    case Plane:
+      return (r - dot(x - point, normal)) / r;
     case Cylinder: {
       const double c[3] = {x.x, x.y, x.z};
       const int u = axis == 0 ? 1 : 0, w = axis == 2 ? 1 : 2;
@@ -517,7 +541,8 @@ struct Wall {
     case Box: {
       const double c[3] = {x.x, x.y, x.z};
       double worst = -INFINITY;
-      for (int k = 0; k < 3; ++k) worst = std::max({worst, (lo[k] - (c[k] - r)) / r, (c[k] + r - hi[k]) / r});
+      for (int k = 0; k < 3; ++k)
+        worst = std::max({worst, (lo[k] - (c[k] - r)) / r, (c[k] + r - hi[k]) / r});
       return worst;
     }
     }
@@ -854,10 +879,10 @@ int run_check(Options o)
       }
     }
     check(through == 0 && crossed == 0,
-          "moved spheres clear of the walls (" + w.label + ": " + str(through) + " of " + str(checked) +
-              " moved matrix spheres reach through by more than tol" +
+          "moved spheres clear of the walls (" + w.label + ": " + str(through) + " of " +
+              str(checked) + " moved matrix spheres reach through by more than tol" +
               (w.kind == Wall::Stl ? ", " + str(crossed) + " moved across a triangle" : "") +
-              (!checked     ? ""
+              (!checked    ? ""
                : worst > 0 ? "; worst: id " + str(worst_id) + " reaches " + num(worst) +
                                  " of its radius through"
                            : "; closest: id " + str(worst_id) + ", clear by " + num(0.0 - worst) +
@@ -997,8 +1022,7 @@ int main(int argc, char **argv)
       w.label = "inside box [" + numg(w.lo[0]) + ", " + numg(w.hi[0]) + "] x [" + numg(w.lo[1]) +
                 ", " + numg(w.hi[1]) + "] x [" + numg(w.lo[2]) + ", " + numg(w.hi[2]) + "]";
       o.walls.push_back(w);
-    }
-    else if (k == "--tol")
+    } else if (k == "--tol")
       o.tol = to_double(next(), k);
     else if (k == "--rmin")
       o.rmin = to_double(next(), k);
