@@ -219,6 +219,42 @@ TEST(FixOptions, WallsErrorsNameTheProblem)
   EXPECT_THROW(parse_fix_arguments({"0", "bars", "walls", "maybe"}), OptionError);
 }
 
+// regrow: off by default; yes gives 3 matrix radii, a length sets the
+// zone's width (capped by the box); no turns it off again.
+TEST(FixOptions, RegrowWidthOrNo)
+{
+  EXPECT_EQ(make_settings(parse_fix_arguments({"0", "bars"}), 0.1, 0.3, 100).regrow, 0);
+  EXPECT_DOUBLE_EQ(
+      make_settings(parse_fix_arguments({"0", "bars", "regrow", "yes"}), 0.1, 0.3, 100).regrow,
+      0.9);
+  EXPECT_EQ(
+      make_settings(parse_fix_arguments({"0", "bars", "regrow", "0.5"}), 0.1, 0.3, 100).regrow,
+      0.5);
+  EXPECT_EQ(
+      make_settings(parse_fix_arguments({"0", "bars", "regrow", "1e30"}), 0.1, 0.3, 100).regrow,
+      100);
+  EXPECT_EQ(make_settings(parse_fix_arguments({"0", "bars", "regrow", "0.5", "regrow", "no"}), 0.1,
+                          0.3, 100)
+                .regrow,
+            0);
+  // size fit does not turn it off.
+  EXPECT_EQ(make_settings(parse_fix_arguments({"0", "bars", "size", "fit", "regrow", "0.5"}), 0.1,
+                          0.3, 100)
+                .regrow,
+            0.5);
+  const std::string I = "Illegal fix reinforce/invert command: ";
+  EXPECT_EQ(error_of({"0", "bars", "regrow", "0"}), I + "regrow must be > 0, 'yes' or 'no'");
+  EXPECT_EQ(error_of({"0", "bars", "regrow", "-1"}), I + "regrow must be > 0, 'yes' or 'no'");
+  EXPECT_EQ(error_of({"0", "bars", "regrow", "maybe"}),
+            I + "expected a number for regrow, got 'maybe'");
+  EXPECT_EQ(error_of({"0", "bars", "regrow", "inf"}), I + "expected a number for regrow, got 'inf'");
+  EXPECT_EQ(error_of({"0", "bars", "regrow"}), I + "missing value for keyword 'regrow'");
+  EXPECT_EQ(error_of({"0", "bars", "regrow", "yes", "unplaced", "keep"}),
+            I + "regrow makes room for the targets unplaced keep leaves where they are: use one "
+                "of them");
+  EXPECT_NO_THROW(parse_fix_arguments({"0", "bars", "regrow", "no", "unplaced", "keep"}));
+}
+
 TEST(FixOptions, ImpossibleRadiusRangeFromScene)
 {
   const FixOptions o = parse_fix_arguments({"0", "bars"});

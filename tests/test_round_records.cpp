@@ -75,7 +75,7 @@ TEST(RoundRecords, RecordsOfARelocation)
   rel.targets.push_back({1, 11, Outcome::Unplaced, {}, 0});
   rel.targets.push_back({2, 12, Outcome::Displaced, {}, 0});
   rel.pushes.push_back({20, {0.1, 0, 0}});
-  const std::vector<RoundRecord> deleted = records_of(rel, false);
+  const std::vector<RoundRecord> deleted = records_of(rel, Unplaced::Delete);
   ASSERT_EQ(deleted.size(), 4u);
   EXPECT_EQ(deleted[0].kind, RecordKind::Placed);
   EXPECT_EQ(deleted[0].r, 0.5);
@@ -83,6 +83,14 @@ TEST(RoundRecords, RecordsOfARelocation)
   EXPECT_EQ(deleted[2].kind, RecordKind::Deleted);
   EXPECT_EQ(deleted[3].kind, RecordKind::Pushed);
   EXPECT_EQ(deleted[3].id, 20);
-  const std::vector<RoundRecord> kept = records_of(rel, true);
+  const std::vector<RoundRecord> kept = records_of(rel, Unplaced::Keep);
   EXPECT_EQ(kept[1].kind, RecordKind::Kept);
+  // Deferred for the regrowth: no record for the unplaced one (it stays
+  // pending and vacant); the displaced one is still deleted.
+  const std::vector<RoundRecord> deferred = records_of(rel, Unplaced::Defer);
+  ASSERT_EQ(deferred.size(), 3u);
+  EXPECT_EQ(deferred[0].id, 10);
+  EXPECT_EQ(deferred[1].id, 12);
+  EXPECT_EQ(deferred[1].kind, RecordKind::Deleted);
+  EXPECT_EQ(deferred[2].kind, RecordKind::Pushed);
 }

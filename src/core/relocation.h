@@ -56,6 +56,9 @@ struct Settings {
   double push = 0;    // Keep: largest displacement of a pushed sphere (0: no pushing)
   double displaced =
       0.5;    // a target with at least this volume fraction inside the bars is deleted
+  // The width of the zone regrown around a target the relocation left
+  // without a place (regrowth.h); 0: none, such a target is deleted.
+  double regrow = 0;
 };
 
 // Placement domain of one process.
@@ -104,6 +107,7 @@ struct Stats {
   double max_push = 0;            // largest displacement of a pushed sphere in one call, / rmin
   std::int64_t sweeps = 0;        // rearrangement sweeps
   std::int64_t isolated = 0;      // unplaced with fewer than four spheres within `search`
+  std::int64_t matrix_deleted = 0;    // matrix spheres (not targets) deleted to make room
 };
 
 // The one copy of an atom that lies in the box (periodic images lie

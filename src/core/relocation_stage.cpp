@@ -4,9 +4,9 @@
 
 namespace reinforce {
 
-RelocationStage::RelocationStage(const Settings &settings, const Domain &domain, bool keep_unplaced,
+RelocationStage::RelocationStage(const Settings &settings, const Domain &domain, Unplaced unplaced,
                                  double target_rmin, double target_rmax, double read, Stats &stats)
-    : settings_(settings), domain_(domain), keep_unplaced_(keep_unplaced),
+    : settings_(settings), domain_(domain), unplaced_(unplaced),
       classes_(settings.size == SizeMode::Keep ? kSizeClasses : 1), target_rmax_(target_rmax),
       class_width_((target_rmax - target_rmin) / classes_), read_(read), stats_(stats)
 {
@@ -23,8 +23,8 @@ int RelocationStage::pass_of(const Particle &p) const
 StageResult RelocationStage::run(const std::vector<Particle> &reads,
                                  const std::function<bool(const Particle &)> &mine)
 {
-  const Relocation rel = relocate_targets(reads, settings_, domain_, keep_unplaced_, stats_, mine);
-  return {records_of(rel, keep_unplaced_), rel.targets.size()};
+  const Relocation rel = relocate_targets(reads, settings_, domain_, unplaced_ == Unplaced::Keep, stats_, mine);
+  return {records_of(rel, unplaced_), rel.targets.size()};
 }
 
 }    // namespace reinforce

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "relocation.h"
+#include "round_records.h"
 #include "stage.h"
 
 namespace reinforce {
@@ -20,7 +21,7 @@ class RelocationStage : public Stage {
 public:
   // target_rmin, target_rmax: the targets' radius range over all
   // processes; read: what a round reads around a target.
-  RelocationStage(const Settings &settings, const Domain &domain, bool keep_unplaced,
+  RelocationStage(const Settings &settings, const Domain &domain, Unplaced unplaced,
                   double target_rmin, double target_rmax, double read, Stats &stats);
   int passes() const override { return classes_; }
   int pass_of(const Particle &p) const override;
@@ -31,7 +32,7 @@ public:
 private:
   const Settings &settings_;
   const Domain &domain_;
-  bool keep_unplaced_;
+  Unplaced unplaced_;
   int classes_;
   double target_rmax_, class_width_, read_;
   Stats &stats_;

@@ -4,14 +4,18 @@
 
 namespace reinforce {
 
-std::vector<RoundRecord> records_of(const Relocation &rel, bool keep_unplaced)
+std::vector<RoundRecord> records_of(const Relocation &rel, Unplaced unplaced)
 {
   std::vector<RoundRecord> out;
   out.reserve(rel.targets.size() + rel.pushes.size());
   for (const TargetResult &t : rel.targets) {
-    const RecordKind kind = t.outcome == Outcome::Placed
-                                ? RecordKind::Placed
-                                : (keep_unplaced ? RecordKind::Kept : RecordKind::Deleted);
+    RecordKind kind = RecordKind::Placed;
+    if (t.outcome == Outcome::Displaced) {
+      kind = unplaced == Unplaced::Keep ? RecordKind::Kept : RecordKind::Deleted;
+    } else if (t.outcome == Outcome::Unplaced) {
+      if (unplaced == Unplaced::Defer) continue;
+      kind = unplaced == Unplaced::Keep ? RecordKind::Kept : RecordKind::Deleted;
+    }
     out.push_back({t.id, kind, t.x, t.r});
   }
   for (const Push &p : rel.pushes) out.push_back({p.id, RecordKind::Pushed, p.dx, 0});

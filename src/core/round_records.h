@@ -23,8 +23,14 @@ struct RoundRecord {
   double r = 0;
 };
 
-// The records of one relocation: its targets, then its pushes.
-std::vector<RoundRecord> records_of(const Relocation &rel, bool keep_unplaced);
+// What becomes of a target the relocation found no place for: deleted,
+// kept where it is (unplaced keep), or left vacant and pending for the
+// regrowth (no record: its copies stay vacant in every view).
+enum class Unplaced { Delete, Keep, Defer };
+
+// The records of one relocation: its targets, then its pushes. A target
+// deleted as displaced by the bars is deleted whatever `unplaced` says.
+std::vector<RoundRecord> records_of(const Relocation &rel, Unplaced unplaced);
 
 // The exchange carries doubles: a record is kRecordDoubles of them, the ID
 // as two 32-bit halves (each exact in a double, so 64-bit IDs travel

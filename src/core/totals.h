@@ -1,9 +1,10 @@
 // The totals of one invocation and the one table of their fields: how
 // each is combined over the processes, and where the fix's global vector
-// (f_ID[1] to f_ID[17]) reports it (docs/fix_reinforce_invert.rst,
+// (f_ID[1] to f_ID[25]) reports it (docs/fix_reinforce_invert.rst,
 // "Output"). The reductions and the output vector read the table.
 #pragma once
 
+#include "regrowth.h"
 #include "relocation.h"
 
 #include <array>
@@ -20,6 +21,8 @@ struct Totals {
   // Matrix spheres near the bars that already overlapped each other before
   // the relocation (left as they are; reported, not hidden).
   double packing_overlaps = 0, packing_max_overlap = 0;
+  RegrowthStats regrowth;
+  double regrowth_seconds = 0;
 };
 
 // Sum or Max: each process's value, combined over the processes. Global:
@@ -34,11 +37,11 @@ struct TotalsField {
   void (*set)(Totals &, double);
 };
 
-constexpr int kOutputSize = 17;
-constexpr std::size_t kTotalsFields = 20;
+constexpr int kOutputSize = 25;
+constexpr std::size_t kTotalsFields = 32;
 const std::array<TotalsField, kTotalsFields> &totals_fields();
 
-// The fix's global vector, f_ID[1] to f_ID[17], in the order of the
+// The fix's global vector, f_ID[1] to f_ID[25], in the order of the
 // table's output indices.
 std::array<double, kOutputSize> output_vector(const Totals &t);
 

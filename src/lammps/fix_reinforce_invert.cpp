@@ -196,9 +196,10 @@ public:
 
   void ensure_ghost_cutoff(double reach) override
   {
-    saved_cutghostuser = f.comm->cutghostuser;
     const double before = std::min({f.comm->cutghost[0], f.comm->cutghost[1], f.comm->cutghost[2]});
     if (before >= reach) return;
+    // A second raise (the regrowth) restores the user's value too.
+    if (!raised) saved_cutghostuser = f.comm->cutghostuser;
     f.comm->cutghostuser = reach;
     raised = true;
     refresh();    // comm->setup() with the new cutoff, then the ghosts again

@@ -495,7 +495,8 @@ void FixReinforceInvert::ensure_ghost_cutoff(double reach)
 {
   const double have = std::min({ghost_reach(0), ghost_reach(1), ghost_reach(2)});
   if (have >= reach) return;
-  user_cutghost_ = comm->cutghostuser;
+  // A second raise (the regrowth) restores the user's value too.
+  if (user_cutghost_ < 0) user_cutghost_ = comm->cutghostuser;
   comm->cutghostuser = granular_ghosts() ? 2 * reach : reach;
   refresh();
   char line[200];

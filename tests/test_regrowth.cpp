@@ -1,0 +1,224 @@
+// Regrowth tests on small hand-made zones: a target left without a void,
+// the bar it overlaps, the matrix around it.
+#include "regrowth.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace reinforce;
+
+namespace {
+
+Domain open_box()
+{
+  Domain d;
+  d.lo = {-1, -1, -1};
+  d.hi = {1, 1, 1};
+  d.view_lo = d.lo;
+  d.view_hi = d.hi;
+  d.sub_lo = d.lo;
+  d.sub_hi = d.hi;
+  return d;
+}
+
+Settings settings_for(double rmin)
+{
+  Settings s;
+  s.rmin = rmin;
+  s.rmax = rmin;
+  s.tol = 1e-6;
+  return s;
+}
+
+Particle sphere(Vec3 x, double r, std::int64_t id, Role role)
+{
+  Particle p;
+  p.x = x;
+  p.r = r;
+  p.id = id;
+  p.role = role;
+  p.owned = true;
+  return p;
+}
+
+// Largest overlap (over the smaller radius) between present spheres after
+// the records are applied to `reads`, the bar's own chain left out.
+double largest_overlap_after(std::vector<Particle> reads, const std::vector<RoundRecord> &records)
+{
+  for (const RoundRecord &rec : records)
+    for (Particle &p : reads) {
+      if (p.id != rec.id) continue;
+      if (rec.kind == RecordKind::Deleted) p.role = Role::Target;    // gone
+      if (rec.kind == RecordKind::Placed) {
+        p.x = rec.v;
+        p.r = rec.r;
+        p.role = Role::Matrix;
+      }
+      if (rec.kind == RecordKind::Pushed) p.x = p.x + rec.v;
+    }
+  double worst = -INFINITY;
+  for (std::size_t i = 0; i < reads.size(); ++i)
+    for (std::size_t j = i + 1; j < reads.size(); ++j) {
+      if (reads[i].role == Role::Target || reads[j].role == Role::Target) continue;
+      if (reads[i].role == Role::Rebar && reads[j].role == Role::Rebar) continue;    // a chain
+      const double o = reads[i].r + reads[j].r - norm(reads[i].x - reads[j].x);
+      worst = std::max(worst, o / std::min(reads[i].r, reads[j].r));
+    }
+  return worst;
+}
+
+}    // namespace
+
+// A target that overlaps a bar with free space beside it is put back at its
+// own radius, clear of the bar, near where it was.
+TEST(Regrowth, SeedWithRoomIsPutBackAtItsRadius)
+{
+  std::vector<Particle> reads = {sphere({0, 0, 0}, 0.1, 1, Role::Rebar),
+                                 sphere({0.15, 0, 0}, 0.1, 2, Role::Target)};
+  RegrowthStats stats;
+  const std::vector<RoundRecord> rec =
+      regrow(reads, {1}, 0.3, settings_for(0.1), open_box(), stats);
+  ASSERT_EQ(rec.size(), 1u);
+  EXPECT_EQ(rec[0].kind, RecordKind::Placed);
+  EXPECT_EQ(rec[0].r, 0.1);
+  EXPECT_NEAR(norm(rec[0].v), 0.2, 1e-6);
+  EXPECT_LE(largest_overlap_after(reads, rec), 1e-6);
+  EXPECT_EQ(stats.regrown, 1);
+  EXPECT_EQ(stats.deleted, 0);
+}
+
+// A neighbour in the way is pushed (by no more than it must, within the
+// zone), and the seed still gets its own radius.
+TEST(Regrowth, NeighbourInTheWayIsPushed)
+{
+  std::vector<Particle> reads = {sphere({0, 0, 0}, 0.1, 1, Role::Rebar),
+                                 sphere({0.15, 0, 0}, 0.1, 2, Role::Target),
+                                 sphere({0.36, 0, 0}, 0.1, 3, Role::Matrix)};
+  RegrowthStats stats;
+  const std::vector<RoundRecord> rec =
+      regrow(reads, {1}, 0.3, settings_for(0.1), open_box(), stats);
+  ASSERT_EQ(rec.size(), 2u);
+  EXPECT_EQ(rec[0].kind, RecordKind::Placed);
+  EXPECT_EQ(rec[1].kind, RecordKind::Pushed);
+  EXPECT_EQ(rec[1].id, 3);
+  EXPECT_GT(rec[1].v.x, 0.03);
+  EXPECT_LT(norm(rec[1].v), 0.06);
+  EXPECT_LE(largest_overlap_after(reads, rec), 1e-6);
+  EXPECT_EQ(stats.moved, 1);
+  EXPECT_GT(stats.max_move, 0.3);
+}
+
+// Enclosed by spheres that may not move (outside the fix group), a seed
+// cannot fit: it is deleted and its zone is left exactly as it was.
+TEST(Regrowth, SeedWithoutRoomIsDeletedAndTheZoneLeftAsItWas)
+{
+  std::vector<Particle> reads = {sphere({0, 0, 0}, 0.1, 1, Role::Rebar),
+                                 sphere({0.15, 0, 0}, 0.1, 2, Role::Target)};
+  std::int64_t id = 10;
+  for (Vec3 d : {Vec3{0.2, 0, 0}, Vec3{0, 0.2, 0}, Vec3{0, -0.2, 0}, Vec3{0, 0, 0.2},
+                 Vec3{0, 0, -0.2}}) {
+    Particle p = sphere(Vec3{0.15, 0, 0} + d, 0.1, id++, Role::Matrix);
+    p.pushable = d.x == 0;    // the one beyond cannot move: the others cannot make room
+    reads.push_back(p);
+  }
+  RegrowthStats stats;
+  const std::vector<RoundRecord> rec =
+      regrow(reads, {1}, 0.3, settings_for(0.1), open_box(), stats);
+  ASSERT_EQ(rec.size(), 1u);
+  EXPECT_EQ(rec[0].kind, RecordKind::Deleted);
+  EXPECT_EQ(rec[0].id, 2);
+  EXPECT_EQ(stats.deleted, 1);
+  EXPECT_EQ(stats.moved, 0);
+  EXPECT_LE(largest_overlap_after(reads, rec), 1e-6);
+}
+
+// A seed whose centre lies inside a bar sphere is what the bar displaces:
+// deleted without a growth, and counted.
+TEST(Regrowth, SeedInsideABarIsDisplaced)
+{
+  std::vector<Particle> reads = {sphere({0, 0, 0}, 0.1, 1, Role::Rebar),
+                                 sphere({0.05, 0, 0}, 0.1, 2, Role::Target),
+                                 sphere({0, 0, 0}, 0.1, 3, Role::Target)};    // coincident
+  RegrowthStats stats;
+  const std::vector<RoundRecord> rec =
+      regrow(reads, {1, 2}, 0.3, settings_for(0.1), open_box(), stats);
+  ASSERT_EQ(rec.size(), 2u);
+  for (const RoundRecord &r : rec) EXPECT_EQ(r.kind, RecordKind::Deleted);
+  EXPECT_EQ(stats.displaced, 2);
+  EXPECT_EQ(stats.sweeps, 0);
+}
+
+// A move the walls refuse is not made: with a plane just past the free
+// side, the seed cannot leave the bar that way and is deleted rather than
+// put through the wall.
+TEST(Regrowth, WallsRefuseMoves)
+{
+  std::vector<Particle> reads = {sphere({0, 0, 0}, 0.1, 1, Role::Rebar),
+                                 sphere({0.15, 0, 0}, 0.1, 2, Role::Target)};
+  Domain box = open_box();
+  box.hi = {0.26, 1, 1};    // the box face: a sphere at x = 0.2 of radius 0.1 pokes out
+  RegrowthStats stats;
+  std::vector<RoundRecord> rec = regrow(reads, {1}, 0.3, settings_for(0.1), box, stats);
+  ASSERT_EQ(rec.size(), 1u);
+  EXPECT_EQ(rec[0].kind, RecordKind::Deleted);
+  box.hi = {0.31, 1, 1};
+  rec = regrow(reads, {1}, 0.3, settings_for(0.1), box, stats);
+  ASSERT_EQ(rec.size(), 1u);
+  EXPECT_EQ(rec[0].kind, RecordKind::Placed);
+  EXPECT_LE(rec[0].v.x + 0.1, 0.31);
+}
+
+// The order of the particles does not change the result, bit for bit;
+// every record is finite; nothing moves farther than the zone.
+TEST(Regrowth, OrderFreeFiniteAndWithinTheZone)
+{
+  std::vector<Particle> reads = {sphere({0, 0, 0}, 0.1, 1, Role::Rebar),
+                                 sphere({0.16, 0, 0}, 0.1, 2, Role::Rebar)};
+  std::int64_t id = 10;
+  for (int i = -2; i <= 3; ++i)
+    for (int j = -2; j <= 2; ++j)
+      for (int k = -2; k <= 2; ++k) {
+        const Vec3 c{0.21 * i + 0.013 * j, 0.21 * j + 0.007 * k, 0.21 * k + 0.011 * i};
+        const bool near_bar = norm(c) < 0.3 || norm(c - Vec3{0.16, 0, 0}) < 0.3;
+        reads.push_back(sphere(c, 0.1, id++, near_bar ? Role::Target : Role::Matrix));
+      }
+  std::vector<std::size_t> seeds;
+  for (std::size_t k = 0; k < reads.size(); ++k)
+    if (reads[k].role == Role::Target) seeds.push_back(k);
+  ASSERT_GE(seeds.size(), 3u);
+  RegrowthStats s1, s2;
+  const std::vector<RoundRecord> a = regrow(reads, seeds, 0.3, settings_for(0.1), open_box(), s1);
+  std::vector<Particle> reversed(reads.rbegin(), reads.rend());
+  std::vector<std::size_t> reversed_seeds;
+  for (std::size_t k : seeds) reversed_seeds.push_back(reads.size() - 1 - k);
+  const std::vector<RoundRecord> b =
+      regrow(reversed, reversed_seeds, 0.3, settings_for(0.1), open_box(), s2);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(a[k].id, b[k].id);
+    EXPECT_EQ(a[k].kind, b[k].kind);
+    EXPECT_EQ(a[k].v.x, b[k].v.x);
+    EXPECT_EQ(a[k].v.y, b[k].v.y);
+    EXPECT_EQ(a[k].v.z, b[k].v.z);
+    EXPECT_TRUE(is_finite(a[k].v));
+    if (a[k].kind == RecordKind::Pushed) EXPECT_LE(norm(a[k].v), 0.3);
+  }
+  EXPECT_EQ(s1.seeds, static_cast<std::int64_t>(seeds.size()));
+  EXPECT_EQ(s1.regrown + s1.deleted, s1.seeds);
+  EXPECT_GT(s1.regrown, 0);
+  EXPECT_LE(largest_overlap_after(reads, a), 1e-6);
+}
+
+// The reach: it writes within the width and reads the width plus the two
+// largest radii (a hair more), whatever the width.
+TEST(Regrowth, Reach)
+{
+  const RegrowthReach r = regrowth_reach(0.3, 0.1, 0.5);
+  EXPECT_EQ(r.write, 0.3);
+  EXPECT_GE(r.read, 0.9);
+  EXPECT_LT(r.read, 0.9 * (1 + 1e-8));
+  RegrowthStats none;
+  EXPECT_TRUE(regrow({}, {}, 0.3, settings_for(0.1), open_box(), none).empty());
+  EXPECT_EQ(none.seeds, 0);
+}
