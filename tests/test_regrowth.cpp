@@ -82,15 +82,16 @@ TEST(Regrowth, SeedWithRoomIsPutBackAtItsRadius)
   ASSERT_EQ(rec.size(), 1u);
   EXPECT_EQ(rec[0].kind, RecordKind::Placed);
   EXPECT_EQ(rec[0].r, 0.1);
-  EXPECT_NEAR(norm(rec[0].v), 0.2, 1e-6);
+  EXPECT_GE(norm(rec[0].v), 0.2 - 1e-7);    // clear of the bar
+  EXPECT_LE(norm(rec[0].v - Vec3{0.15, 0, 0}), 0.15);    // near where it was (half the width)
   EXPECT_LE(largest_overlap_after(reads, rec), 1e-6);
   EXPECT_EQ(stats.regrown, 1);
   EXPECT_EQ(stats.deleted, 0);
 }
 
-// A neighbour in the way is pushed (by no more than it must, within the
-// zone), and the seed still gets its own radius.
-TEST(Regrowth, NeighbourInTheWayIsPushed)
+// The matrix of the zone moves (towards the bar, never into anything, within
+// the zone), and the seed still gets its own radius.
+TEST(Regrowth, ZoneMovesAndStaysClear)
 {
   std::vector<Particle> reads = {sphere({0, 0, 0}, 0.1, 1, Role::Rebar),
                                  sphere({0.15, 0, 0}, 0.1, 2, Role::Target),
@@ -102,15 +103,15 @@ TEST(Regrowth, NeighbourInTheWayIsPushed)
   EXPECT_EQ(rec[0].kind, RecordKind::Placed);
   EXPECT_EQ(rec[1].kind, RecordKind::Pushed);
   EXPECT_EQ(rec[1].id, 3);
-  EXPECT_GT(rec[1].v.x, 0.03);
-  EXPECT_LT(norm(rec[1].v), 0.06);
+  EXPECT_GT(norm(rec[1].v), 0);
+  EXPECT_LE(norm(rec[1].v), 0.5 * 0.3 * (1 - 0.21 / 0.3) + 1e-12);    // its cap
   EXPECT_LE(largest_overlap_after(reads, rec), 1e-6);
   EXPECT_EQ(stats.moved, 1);
-  EXPECT_GT(stats.max_move, 0.3);
+  EXPECT_GT(stats.max_move, 0);
 }
 
 // Enclosed by spheres that may not move (outside the fix group), a seed
-// cannot fit: it is deleted and its zone is left exactly as it was.
+// cannot fit: it is deleted and nothing else changes.
 TEST(Regrowth, SeedWithoutRoomIsDeletedAndTheZoneLeftAsItWas)
 {
   std::vector<Particle> reads = {sphere({0, 0, 0}, 0.1, 1, Role::Rebar),
@@ -119,7 +120,7 @@ TEST(Regrowth, SeedWithoutRoomIsDeletedAndTheZoneLeftAsItWas)
   for (Vec3 d : {Vec3{0.2, 0, 0}, Vec3{0, 0.2, 0}, Vec3{0, -0.2, 0}, Vec3{0, 0, 0.2},
                  Vec3{0, 0, -0.2}}) {
     Particle p = sphere(Vec3{0.15, 0, 0} + d, 0.1, id++, Role::Matrix);
-    p.pushable = d.x == 0;    // the one beyond cannot move: the others cannot make room
+    p.pushable = false;    // outside the fix group: obstacles only
     reads.push_back(p);
   }
   RegrowthStats stats;
@@ -146,27 +147,30 @@ TEST(Regrowth, SeedInsideABarIsDisplaced)
   ASSERT_EQ(rec.size(), 2u);
   for (const RoundRecord &r : rec) EXPECT_EQ(r.kind, RecordKind::Deleted);
   EXPECT_EQ(stats.displaced, 2);
-  EXPECT_EQ(stats.sweeps, 0);
+  EXPECT_EQ(stats.regrown, 0);
 }
 
-// A move the walls refuse is not made: with a plane just past the free
-// side, the seed cannot leave the bar that way and is deleted rather than
-// put through the wall.
+// A place the box faces (or walls, or the region) refuse is not taken: in
+// a channel as wide as the seed, with the face past the bar too near, the
+// seed is deleted rather than put through it; a little farther, it fits.
 TEST(Regrowth, WallsRefuseMoves)
 {
   std::vector<Particle> reads = {sphere({0, 0, 0}, 0.1, 1, Role::Rebar),
                                  sphere({0.15, 0, 0}, 0.1, 2, Role::Target)};
   Domain box = open_box();
-  box.hi = {0.26, 1, 1};    // the box face: a sphere at x = 0.2 of radius 0.1 pokes out
+  box.lo = {-1, -0.1, -0.1};
+  box.hi = {0.26, 0.1, 0.1};    // a sphere clear of the bar (x >= 0.2) pokes out
   RegrowthStats stats;
   std::vector<RoundRecord> rec = regrow(reads, {1}, 0.3, settings_for(0.1), box, stats);
   ASSERT_EQ(rec.size(), 1u);
   EXPECT_EQ(rec[0].kind, RecordKind::Deleted);
-  box.hi = {0.31, 1, 1};
+  box.hi = {0.31, 0.1, 0.1};
   rec = regrow(reads, {1}, 0.3, settings_for(0.1), box, stats);
   ASSERT_EQ(rec.size(), 1u);
   EXPECT_EQ(rec[0].kind, RecordKind::Placed);
+  EXPECT_LE(largest_overlap_after(reads, rec), 1e-6);
   EXPECT_LE(rec[0].v.x + 0.1, 0.31);
+  EXPECT_GE(rec[0].v.x, 0.2 - 1e-7);
 }
 
 // The order of the particles does not change the result, bit for bit;

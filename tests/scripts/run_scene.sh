@@ -10,7 +10,7 @@
 #  * the checker (no overlap above tol, radii, walls, atom conservation with
 #    the deleted count the fix reports, rebar untouched), and its counts
 #    against the fix's: targets moved = relocated, other spheres moved <=
-#    pushed (PUSHED line, f_ID[13]; none moved without it), targets left on
+#    pushed (PUSHED line, f_ID[13] + f_ID[21]; none moved without it), targets left on
 #    a bar = kept (unless SCENE_KEPT_ANY=1: atoms outside the fix group may be left
 #    on a bar too);
 #  * targets = relocated + deleted + kept, one summary line in the log;
@@ -23,7 +23,8 @@
 # Optional lines the input may print, checked when present:
 #   print "STATS f1 ... f8 f10"     printed (the stability tests match it)
 #   print "ATOMS $(atoms)"          LAMMPS's atom count = atoms in after.dump
-#   print "PUSHED f13"              spheres pushed to make room (f_ID[13])
+#   print "PUSHED f13+f21"          spheres moved to make room: pushed (f_ID[13])
+#                                   or moved by the regrowth (f_ID[21])
 #   print "ONCE f1 f2 f3 f4"        after a second run with the same N = 0 fix:
 #                                   same totals, no second summary line
 #   print "AGAIN t r d k atoms"     a fresh fix afterwards: its targets are
@@ -79,6 +80,7 @@ summaries=$(grep -c '^fix reinforce/invert: [0-9]' "$log" || true)
 [ "$summaries" -ge 1 ] || fail "no summary line"
 echo "$name np=$np: targets $targets relocated $relocated deleted $deleted kept $kept"
 last STATS "$log"
+grep '^fix reinforce/invert: regrowth:' "$log" | tail -1 || true
 [ "$targets" -eq $((relocated + deleted + kept)) ] || fail "targets != relocated + deleted + kept"
 
 "$checker" --before "$work/a/before.dump" --after "$work/a/after.dump" --deleted "$deleted" \
