@@ -40,7 +40,7 @@ upper() { tr '[:lower:]' '[:upper:]' <<<"$1"; }
 
 # The hosts not skipped are configured ON explicitly, before the caller's
 # REINFORCE_CMAKE_ARGS (a later -D wins: an OFF there fails the host check).
-host_on=()
+host_on=(-DREINFORCE_QUALITY_TESTS=ON)    # an OFF left in a cache must not drop them
 for h in lammps liggghts; do
   [ -n "$(skip_reason "$h")" ] || host_on+=("-DREINFORCE_$(upper "$h")=ON")
 done
@@ -160,9 +160,9 @@ elif [ "${REINFORCE_QUICK:-0}" != 1 ]; then
   echo "== sanitizer build (ASan + UBSan): core tests and MPI scenes"
   san="$top/build-sanitize"
   san_args=(-DREINFORCE_LIGGGHTS=OFF) san_targets=(core_tests make_scene check_scene) san_hosts=()
-  san_tests="^Kernel|^Engine|^Fix|^Schedule|^Summary|^Invocation|^CellGrid|^RoundRecords|^Totals|^stability_periodic_2x2x1_np4$|^stability_stiff|^lammps_identical_keep_2x2x1_np4$|^lammps_scene_eight_thin_subdomains_search_0.02_np8$"
+  san_tests="^Kernel|^Engine|^Fix|^Schedule|^Summary|^Invocation|^CellGrid|^RoundRecords|^Totals|^Regrowth|^stability_periodic_2x2x1_np4$|^stability_stiff|^lammps_identical_keep_2x2x1_np4$|^lammps_scene_eight_thin_subdomains_search_0.02_np8$|^lammps_identical_regrow_2x2x1_np4$"
   if [ -n "$(skip_reason lammps)" ]; then
-    san_args+=(-DREINFORCE_LAMMPS=OFF) san_tests="^Kernel|^Engine|^Fix|^Schedule|^Summary|^Invocation|^CellGrid|^RoundRecords|^Totals"
+    san_args+=(-DREINFORCE_LAMMPS=OFF) san_tests="^Kernel|^Engine|^Fix|^Schedule|^Summary|^Invocation|^CellGrid|^RoundRecords|^Totals|^Regrowth"
     skipped+=("sanitizer: LAMMPS scenes (lammps skipped)")
   else
     # ON explicitly: an OFF left in build-sanitize's cache must not drop the scenes

@@ -5,7 +5,10 @@
 #   quality.sh CASE NP LMP CHECK_SCENE SCENE_QUALITY SCENES [--] [scene_quality args]
 # SCENES/CASE/{before.data,ref.data,boundary} must exist (make_scenes.sh).
 # QUALITY_LMP_VARS="-var method delete -var cut 0.0125": more lmp arguments
-# (in.quality lists them).
+# (in.quality lists them). QUALITY_REMOVED_MAX=X: the removed ratio must be
+# at most X. A scene without ref.data is measured without a reference.
+# The scene's md5 (ids, types, positions, radii as written) is printed, to
+# compare process counts.
 set -euo pipefail
 case=$1 np=$2 lmp=$3 check=$4 quality=$5 scenes=$6
 shift 6
@@ -14,7 +17,9 @@ shift 6
 vars=(${QUALITY_LMP_VARS:-})
 here=$(cd "$(dirname "$0")" && pwd)
 dir=$scenes/$case
-[ -f "$dir/before.data" ] && [ -f "$dir/ref.data" ] || { echo "FAIL: no scene in $dir (make_scenes.sh)"; exit 1; }
+[ -f "$dir/before.data" ] || { echo "FAIL: no scene in $dir (make_scenes.sh)"; exit 1; }
+reference=()
+[ -f "$dir/ref.data" ] && reference=(--reference "$dir/ref.data")
 read -r bx by bz < "$dir/boundary"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 work=$(mktemp -d "${TMPDIR:-/tmp}/quality_${case}.XXXXXX")
@@ -31,5 +36,17 @@ echo "$case np=$np: targets $targets relocated $relocated deleted $deleted kept 
 grep '^fix reinforce/invert:' "$work/log" | tail -1 || true
 "$check" --before "$work/before.dump" --after "$work/after.dump" --deleted "$deleted" \
   | grep -v '^INFO' || { echo "FAIL: check_scene (above)"; exit 1; }
-"$quality" --before "$work/before.dump" --after "$work/after.dump" --reference "$dir/ref.data" \
-  --boundary $bx $by $bz --quiet-profile "$@"
+echo "SCENE_MD5 $(md5sum < "$work/after.dump" | cut -c1-32)"
+status=0
+"$quality" --before "$work/before.dump" --after "$work/after.dump" "${reference[@]}" \
+  --boundary $bx $by $bz --quiet-profile "$@" | tee "$work/quality" || status=$?
+if [ -n "${QUALITY_REMOVED_MAX:-}" ]; then
+  removed=$(grep '^QUALITY' "$work/quality" | tr ' ' '\n' | sed -n 's/^removed_ratio=//p')
+  if awk -v r="$removed" -v m="$QUALITY_REMOVED_MAX" 'BEGIN {exit !(r + 0 <= m + 0)}'; then
+    echo "PASS: removed ratio $removed <= $QUALITY_REMOVED_MAX"
+  else
+    echo "FAIL: removed ratio $removed > $QUALITY_REMOVED_MAX"
+    status=1
+  fi
+fi
+exit $status
