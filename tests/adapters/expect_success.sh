@@ -9,9 +9,7 @@
 set -uo pipefail
 exe=$1 np=$2 input=$3
 shift 3
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-work=$(mktemp -d "${TMPDIR:-/tmp}/expect_success.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+. "$(dirname "${BASH_SOURCE[0]}")/../scripts/test_env.sh" "expect_success"
 launch=(mpirun -np "$np")
 [ "$np" -eq 1 ] && launch=()
 (cd "$(dirname "$input")" && timeout 120 "${launch[@]}" "$exe" -in "$input" -log "$work/log" \

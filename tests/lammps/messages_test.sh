@@ -37,9 +37,7 @@ case=$1 np=$2 build=$3 expected=${4:-}
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 exe=$build/src/lammps/lmp_reinforce
 checker=$build/tests/check_scene
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-work=$(mktemp -d "${TMPDIR:-/tmp}/messages_${case}.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+. "$(dirname "${BASH_SOURCE[0]}")/../scripts/test_env.sh" "messages_${case}"
 fail() { echo "FAIL: $case np=$np: $*"; exit 1; }
 
 # run INPUT [lmp -var args]: on NP processes, into $work; must exit 0 with no ERROR line

@@ -39,9 +39,7 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 input=$here/in.walls
 exe=$build/src/lammps/lmp_reinforce
 checker=$build/tests/check_scene
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-work=$(mktemp -d "${TMPDIR:-/tmp}/walls_${mode}_${scene}.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+. "$(dirname "${BASH_SOURCE[0]}")/../scripts/test_env.sh" "walls_${mode}_${scene}"
 fail() { echo "FAIL: $mode $scene np=$np: $*"; exit 1; }
 
 # The granular model of every wall/gran fix and of the pair style.

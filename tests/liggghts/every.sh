@@ -8,9 +8,7 @@
 set -euo pipefail
 build=$1 np=$2
 here=$(cd "$(dirname "$0")" && pwd)
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-work=$(mktemp -d "${TMPDIR:-/tmp}/liggghts_every.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+. "$(dirname "${BASH_SOURCE[0]}")/../scripts/test_env.sh" "liggghts_every"
 "$build/tests/make_scene" "$work/scene.data" --box 0 0.4 0 0.2 0 0.2 --radius 0.004 0.008 --fcc \
   --bar 0.01 0.07 0.1 0.39 0.07 0.1 0.005 0.0075
 (cd "$here" && mpirun -np "$np" "$build/src/liggghts/liggghts_reinforce" -in in.every \

@@ -19,9 +19,7 @@ set -euo pipefail
 build=$1 np=$2 case=$3
 here=$(cd "$(dirname "$0")" && pwd)
 exe=$build/src/liggghts/liggghts_reinforce
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-work=$(mktemp -d "${TMPDIR:-/tmp}/liggghts_messages.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+. "$(dirname "${BASH_SOURCE[0]}")/../scripts/test_env.sh" "liggghts_messages"
 fail() { echo "FAIL: $*"; exit 1; }
 gran="wall/gran model hertz tangential history"
 "$build/tests/make_scene" "$work/raw.data" --box 0 0.12 0 0.12 0 0.1 --radius 0.004 0.008 --fcc \

@@ -17,9 +17,7 @@ while [ $# -gt 0 ] && [ "$1" != "--" ]; do vars+=("$1"); shift; done
 [ $# -gt 0 ] && shift
 check_args=("$@")
 here=$(cd "$(dirname "$0")" && pwd)
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-work=$(mktemp -d "${TMPDIR:-/tmp}/liggghts_${name}.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+. "$(dirname "${BASH_SOURCE[0]}")/../scripts/test_env.sh" "liggghts_${name}"
 "$build/tests/make_scene" "$work/scene.data" "${make[@]}" || { echo "FAIL: make_scene"; exit 1; }
 (cd "$here" && timeout 120 mpirun -np "$np" "$build/src/liggghts/liggghts_reinforce" -in in.scene \
    -var data "$work/scene.data" -var out "$work" -log "$work/log" -screen none "${vars[@]}") \

@@ -27,9 +27,7 @@ fixvars=()
 build=$1 np=$2 kind=$3 variant=${4:-first}
 here=$(cd "$(dirname "$0")" && pwd)
 exe=$build/src/liggghts/liggghts_reinforce checker=$build/tests/check_scene
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-work=$(mktemp -d "${TMPDIR:-/tmp}/liggghts_walls.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+. "$(dirname "${BASH_SOURCE[0]}")/../scripts/test_env.sh" "liggghts_walls"
 fail() { echo "FAIL: $*"; exit 1; }
 gran="wall/gran model hertz tangential history"
 case $kind in

@@ -21,9 +21,7 @@ dir=$scenes/$case
 reference=()
 [ -f "$dir/ref.data" ] && reference=(--reference "$dir/ref.data")
 read -r bx by bz < "$dir/boundary"
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-work=$(mktemp -d "${TMPDIR:-/tmp}/quality_${case}.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+. "$(dirname "${BASH_SOURCE[0]}")/../scripts/test_env.sh" "quality_${case}"
 launch=(mpirun -np "$np")
 [ "$np" -eq 1 ] && launch=()
 start=$(date +%s.%N)

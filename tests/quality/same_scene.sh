@@ -10,9 +10,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 dir=$scenes/$case
 [ -f "$dir/before.data" ] || { echo "FAIL: no scene in $dir (make_scenes.sh)"; exit 1; }
 read -r bx by bz < "$dir/boundary"
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-work=$(mktemp -d "${TMPDIR:-/tmp}/same_${case}.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+. "$(dirname "${BASH_SOURCE[0]}")/../scripts/test_env.sh" "same_${case}"
 first=""
 for np in "$@"; do
   launch=(mpirun -np "$np")

@@ -9,9 +9,7 @@
 set -euo pipefail
 build=$1 np=$2
 here=$(cd "$(dirname "$0")/.." && pwd)
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-work=$(mktemp -d "${TMPDIR:-/tmp}/every_periodic.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+. "$(dirname "${BASH_SOURCE[0]}")/test_env.sh" "every_periodic"
 fail() { echo "FAIL: $*"; exit 1; }
 "$build/tests/make_scene" "$work/scene.data" --box 0 0.4 0 0.2 0 0.2 --radius 0.004 0.008 --fcc \
   --bar 0 0.07 0.1 0.3925 0.07 0.1 0.005 0.0075

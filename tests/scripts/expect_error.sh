@@ -11,9 +11,7 @@
 set -uo pipefail
 exe=$1 np=$2 input=$3 expected=$4
 shift 4
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-work=$(mktemp -d "${TMPDIR:-/tmp}/expect_error.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+. "$(dirname "${BASH_SOURCE[0]}")/test_env.sh" "expect_error"
 launch=(mpirun -np "$np")
 [ "$np" -eq 1 ] && launch=()    # serial: the executable itself (no mpirun start-up)
 (cd "$(dirname "$input")" && timeout 120 "${launch[@]}" "$exe" -in "$input" -log "$work/log" \

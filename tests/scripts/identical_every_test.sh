@@ -19,9 +19,7 @@
 set -euo pipefail
 host=$1 build=$2 np=$3 grid=$4 kind=$5
 here=$(cd "$(dirname "$0")/.." && pwd)
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-work=$(mktemp -d "${TMPDIR:-/tmp}/identical_every.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+. "$(dirname "${BASH_SOURCE[0]}")/test_env.sh" "identical_every"
 fail() { echo "FAIL: $*"; exit 1; }
 checker=$build/tests/check_scene
 case $host in

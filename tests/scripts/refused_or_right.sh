@@ -19,9 +19,7 @@ vars=()
 while [ $# -gt 0 ] && [ "$1" != "--" ]; do vars+=("$1"); shift; done
 [ $# -gt 0 ] && shift
 here=$(cd "$(dirname "$0")" && pwd)
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-work=$(mktemp -d "${TMPDIR:-/tmp}/refused_${name}.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+. "$(dirname "${BASH_SOURCE[0]}")/test_env.sh" "refused_${name}"
 "$build/tests/make_scene" "$work/scene.data" "${make[@]}" || exit 2
 launch=(mpirun -np "$np")
 [ "$np" -eq 1 ] && launch=()

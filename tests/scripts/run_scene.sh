@@ -54,9 +54,7 @@ while [ $# -gt 0 ] && [ "$1" != "--" ]; do vars+=("$1"); shift; done
 [ $# -gt 0 ] && shift
 check_args=("$@")
 
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-work=$(mktemp -d "${TMPDIR:-/tmp}/scene_${name}.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+. "$(dirname "${BASH_SOURCE[0]}")/test_env.sh" "scene_${name}"
 indir=$(cd "$(dirname "$input")" && pwd)
 
 fail() { echo "FAIL: $*"; exit 1; }
