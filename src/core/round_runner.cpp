@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <unordered_map>
 
 namespace reinforce {
@@ -140,107 +141,146 @@ std::vector<int> exchange_partners(HostHooks &host, const Domain &domain, double
   return partners;
 }
 
+namespace {
+
+// The rounds of one stage on one process: which rounds its particles
+// belong to, the blocks it runs, its view as the rounds change it, and the
+// records it applies to the host's atoms.
+class RoundRunner {
+public:
+  RoundRunner(HostHooks &host, Stage &stage, const RoundPlan &plan, std::vector<Particle> view,
+              const std::vector<int> &local, const AtomArrays &a, std::vector<int> &doomed)
+      : host_(host), stage_(stage), plan_(plan), a_(a), doomed_(doomed),
+        rounds_near_(stage.read_reach())
+  {
+    for (std::size_t k = 0; k < view.size(); ++k)
+      if (view[k].owned) owned_[view[k].id] = local[k];
+    per_round_.assign(static_cast<std::size_t>(stage.passes()) * plan.lattice.rounds(), 0.0);
+    for (const Particle &p : view) {
+      const int round = round_of(p);
+      if (round < 0) continue;
+      per_round_[round] += 1;
+      rounds_near_.add_target(p.x, round);
+      my_blocks_.push_back(block_key(plan.lattice, round, p.x));
+    }
+    per_round_ = reduce_all(host, per_round_, false);
+    work_.assign(per_round_.size(), 0.0);
+    // Rounds are a bit each in RoundsNear.
+    if (per_round_.size() > 64)
+      host.fail("Fix reinforce/invert: internal error: more than 64 rounds");
+    std::sort(my_blocks_.begin(), my_blocks_.end());
+    my_blocks_.erase(std::unique(my_blocks_.begin(), my_blocks_.end()), my_blocks_.end());
+    other_blocks_ = others_blocks(host, my_blocks_);
+    live_.reset(new LiveView(std::move(view), rounds_near_));
+  }
+
+  // In a round, this process first runs its blocks that do not touch
+  // (share a face, edge or corner with) another process's block of the
+  // round before, then collects that round's results from the others,
+  // then runs the rest: a block reads nothing another process changed in a
+  // block not touching it (blocks are at least write + read reach wide),
+  // so the work waits only where it must, and the results are those of
+  // running the rounds one after the other (docs/design.md, "Overlapping
+  // the exchange").
+  RoundsDone run()
+  {
+    RoundsDone done;
+    int previous = -1;    // the round whose others' results are still to collect
+    for (std::size_t round = 0; round < per_round_.size(); ++round) {
+      if (per_round_[round] == 0) continue;
+      done.rounds++;
+      const int r = static_cast<int>(round);
+      const auto first =
+          std::lower_bound(my_blocks_.begin(), my_blocks_.end(), BlockKey{r, 0, 0, 0});
+      const auto last = std::lower_bound(first, my_blocks_.end(), BlockKey{r + 1, 0, 0, 0});
+      std::vector<BlockKey> waiting;
+      for (auto it = first; it != last; ++it)
+        if (previous >= 0 && touches(plan_.lattice, plan_.box, *it, previous, other_blocks_))
+          waiting.push_back(*it);
+      std::vector<RoundRecord> records;
+      if (static_cast<std::size_t>(last - first) > waiting.size())
+        run_part(r, waiting, false, records);
+      if (previous >= 0) collect();
+      if (!waiting.empty()) run_part(r, waiting, true, records);
+      apply_to_host(host_, a_, owned_, records, doomed_);
+      live_->apply(records, plan_.domain);
+      std::vector<double> encoded;
+      encode_records(records, encoded);
+      host_.post_results(encoded, plan_.partners);
+      previous = r;
+    }
+    if (previous >= 0) {
+      collect();
+      host_.finish_results();
+    }
+    // Per-process work of each round: the busiest process sets its time.
+    for (double most : reduce_all(host_, work_, true)) done.busiest += most;
+    done.processes = host_.sum(1.0);
+    done.blocks = static_cast<double>(my_blocks_.size() + other_blocks_.size());
+    return done;
+  }
+
+private:
+  // The round of a particle that is the stage's work and whose block's
+  // centre this process owns (each unit of work is done by that process),
+  // or -1.
+  int round_of(const Particle &p) const
+  {
+    const int pass = stage_.pass_of(p);
+    if (pass < 0 || !in_box(p.x, plan_.domain) ||
+        !in_subdomain(plan_.lattice.centre_of(p.x), plan_.domain))
+      return -1;
+    return pass * plan_.lattice.rounds() + plan_.lattice.colour_of(p.x);
+  }
+
+  // Runs the work of round `round` in the blocks that are (waits) or are
+  // not among `waiting`.
+  void run_part(int round, const std::vector<BlockKey> &waiting, bool waits,
+                std::vector<RoundRecord> &records)
+  {
+    const auto picked = [&](const Particle &p) {
+      if (round_of(p) != round) return false;
+      const BlockKey key = block_key(plan_.lattice, round, p.x);
+      return std::binary_search(waiting.begin(), waiting.end(), key) == waits;
+    };
+    live_->read_by(round, round_view_);
+    const StageResult result = stage_.run(round_view_, picked);
+    work_[round] += static_cast<double>(result.done);
+    records.insert(records.end(), result.records.begin(), result.records.end());
+  }
+
+  // The other processes' results of the oldest round posted.
+  void collect()
+  {
+    std::vector<RoundRecord> others;
+    if (!decode_records(host_.collect_results(plan_.partners), others))
+      host_.fail("Fix reinforce/invert: internal error: malformed round results");
+    apply_to_host(host_, a_, owned_, others, doomed_);
+    live_->apply(others, plan_.domain);
+  }
+
+  HostHooks &host_;
+  Stage &stage_;
+  const RoundPlan &plan_;
+  const AtomArrays &a_;
+  std::vector<int> &doomed_;
+  std::unordered_map<std::int64_t, int> owned_;    // id -> local index of the owned atom
+  std::vector<double> per_round_;                  // work per round, over all processes
+  std::vector<double> work_;                       // this process's work per round
+  RoundsNear rounds_near_;
+  std::vector<BlockKey> my_blocks_, other_blocks_;
+  std::unique_ptr<LiveView> live_;
+  std::vector<Particle> round_view_;
+};
+
+}    // namespace
+
 RoundsDone run_rounds(HostHooks &host, Stage &stage, const RoundPlan &plan,
                       std::vector<Particle> view, const std::vector<int> &local,
                       const AtomArrays &a, std::vector<int> &doomed)
 {
-  const BlockLattice &lattice = plan.lattice;
-  const Domain &domain = plan.domain;
-  std::unordered_map<std::int64_t, int> owned;    // id -> local index of the owned atom
-  for (std::size_t k = 0; k < view.size(); ++k)
-    if (view[k].owned) owned[view[k].id] = local[k];
-  // Each unit of work is done by the process that owns its block's centre.
-  auto round_of = [&](const Particle &p) {
-    const int pass = stage.pass_of(p);
-    if (pass < 0 || !in_box(p.x, domain) || !in_subdomain(lattice.centre_of(p.x), domain))
-      return -1;
-    return pass * lattice.rounds() + lattice.colour_of(p.x);
-  };
-  std::vector<double> per_round(static_cast<std::size_t>(stage.passes()) * lattice.rounds(), 0.0);
-  for (const Particle &p : view) {
-    const int round = round_of(p);
-    if (round >= 0) per_round[round] += 1;
-  }
-  per_round = reduce_all(host, per_round, false);
-  std::vector<double> work(per_round.size(), 0.0);    // this process's work per round
-  // Rounds are a bit each in RoundsNear.
-  if (per_round.size() > 64) host.fail("Fix reinforce/invert: internal error: more than 64 rounds");
-  RoundsNear rounds_near(stage.read_reach());
-  for (const Particle &p : view) {
-    const int round = round_of(p);
-    if (round >= 0) rounds_near.add_target(p.x, round);
-  }
-  // The blocks that hold this process's work, per round, and the other
-  // processes' ones. In a round, this process first runs its blocks that
-  // do not touch (share a face, edge or corner with) another process's
-  // block of the round before, then collects that round's results from the
-  // others, then runs the rest: a block reads nothing another process
-  // changed in a block not touching it (blocks are at least write + read
-  // reach wide), so the work waits only where it must, and the results are
-  // those of running the rounds one after the other (docs/design.md,
-  // "Overlapping the exchange").
-  std::vector<BlockKey> my_blocks;
-  for (const Particle &p : view) {
-    const int round = round_of(p);
-    if (round >= 0) my_blocks.push_back(block_key(lattice, round, p.x));
-  }
-  std::sort(my_blocks.begin(), my_blocks.end());
-  my_blocks.erase(std::unique(my_blocks.begin(), my_blocks.end()), my_blocks.end());
-  const std::vector<BlockKey> other_blocks = others_blocks(host, my_blocks);
-  LiveView live(std::move(view), rounds_near);
-  std::vector<Particle> round_view;
-  auto run_part = [&](int round, const std::vector<BlockKey> &waiting, bool waits,
-                      std::vector<RoundRecord> &records) {
-    auto picked = [&](const Particle &p) {
-      if (round_of(p) != round) return false;
-      const BlockKey key = block_key(lattice, round, p.x);
-      return std::binary_search(waiting.begin(), waiting.end(), key) == waits;
-    };
-    live.read_by(round, round_view);
-    const StageResult result = stage.run(round_view, picked);
-    work[round] += static_cast<double>(result.done);
-    records.insert(records.end(), result.records.begin(), result.records.end());
-  };
-  auto collect = [&]() {
-    std::vector<RoundRecord> others;
-    if (!decode_records(host.collect_results(plan.partners), others))
-      host.fail("Fix reinforce/invert: internal error: malformed round results");
-    apply_to_host(host, a, owned, others, doomed);
-    live.apply(others, domain);
-  };
-  RoundsDone done;
-  int previous = -1;    // the round whose others' results are still to collect
-  for (std::size_t round = 0; round < per_round.size(); ++round) {
-    if (per_round[round] == 0) continue;
-    done.rounds++;
-    const int r = static_cast<int>(round);
-    const auto first = std::lower_bound(my_blocks.begin(), my_blocks.end(), BlockKey{r, 0, 0, 0});
-    const auto last = std::lower_bound(first, my_blocks.end(), BlockKey{r + 1, 0, 0, 0});
-    std::vector<BlockKey> waiting;
-    for (auto it = first; it != last; ++it)
-      if (previous >= 0 && touches(lattice, plan.box, *it, previous, other_blocks))
-        waiting.push_back(*it);
-    std::vector<RoundRecord> records;
-    if (static_cast<std::size_t>(last - first) > waiting.size())
-      run_part(r, waiting, false, records);
-    if (previous >= 0) collect();
-    if (!waiting.empty()) run_part(r, waiting, true, records);
-    apply_to_host(host, a, owned, records, doomed);
-    live.apply(records, domain);
-    std::vector<double> encoded;
-    encode_records(records, encoded);
-    host.post_results(encoded, plan.partners);
-    previous = r;
-  }
-  if (previous >= 0) {
-    collect();
-    host.finish_results();
-  }
-  // Per-process work of each round: the busiest process sets its time.
-  for (double most : reduce_all(host, work, true)) done.busiest += most;
-  done.processes = host.sum(1.0);
-  done.blocks = static_cast<double>(my_blocks.size() + other_blocks.size());
-  return done;
+  RoundRunner runner(host, stage, plan, std::move(view), local, a, doomed);
+  return runner.run();
 }
 
 }    // namespace reinforce
