@@ -8,9 +8,12 @@
 #
 # It copies the fix and the engine (src/core, no host headers) into
 # src/REINFORCE/, and adds REINFORCE to the package list of cmake/CMakeLists.txt
-# (its files compiled as C++17, which the engine needs; the rest of LAMMPS
-# keeps its own standard). Safe to run again: it refreshes the copies and
-# patches nothing twice.
+# (LAMMPS 29Aug2024 has no other way to name a package to its CMake build).
+# The engine needs C++17, LAMMPS's own standard since 22Jul2025; for an older
+# LAMMPS configure with -D CMAKE_CXX_STANDARD=17 (CMake) or let `make
+# yes-reinforce` add -std=c++17 to Makefile.package (Install.sh, as LAMMPS's
+# own packages set their flags). Safe to run again: it refreshes the copies
+# and patches nothing twice.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 top=$(cd "$here/../../.." && pwd)
@@ -31,14 +34,4 @@ if ! grep -q '^  REINFORCE$' "$cm"; then
   sed -i 's/^set(STANDARD_PACKAGES$/&\n  REINFORCE/' "$cm"
   grep -q '^  REINFORCE$' "$cm" || { echo "install.sh: no STANDARD_PACKAGES list in $cm"; exit 1; }
 fi
-if ! grep -q 'REINFORCE_SOURCES' "$cm"; then
-  cat >>"$cm" <<'CMAKE'
-
-# fix reinforce/invert (package REINFORCE, added by its install.sh): its
-# engine needs C++17; only its own files are compiled so (GCC and Clang).
-if(PKG_REINFORCE AND (CMAKE_CXX_STANDARD LESS 17))
-  set_source_files_properties(${REINFORCE_SOURCES} PROPERTIES COMPILE_OPTIONS "-std=c++17")
-endif()
-CMAKE
-fi
-echo "install.sh: package REINFORCE in $pkg (cmake -D PKG_REINFORCE=on, or make yes-reinforce)"
+echo "install.sh: package REINFORCE in $pkg (cmake -D PKG_REINFORCE=on, with -D CMAKE_CXX_STANDARD=17 before LAMMPS 22Jul2025; or make yes-reinforce)"
