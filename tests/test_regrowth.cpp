@@ -68,17 +68,32 @@ double largest_overlap_after(std::vector<Particle> reads, const std::vector<Roun
   return worst;
 }
 
+// A bar sphere at the origin and a target of the same radius 0.1 on it at
+// x = 0.15 (id 2, index 1), then `more`.
+std::vector<Particle> bar_and_target(std::vector<Particle> more = {})
+{
+  std::vector<Particle> reads = {sphere({0, 0, 0}, 0.1, 1, Role::Rebar),
+                                 sphere({0.15, 0, 0}, 0.1, 2, Role::Target)};
+  reads.insert(reads.end(), more.begin(), more.end());
+  return reads;
+}
+
+// The regrowth of that target, in a zone of 0.3.
+std::vector<RoundRecord> regrow_target(const std::vector<Particle> &reads, const Domain &box,
+                                       RegrowthStats &stats)
+{
+  return regrow(reads, {1}, 0.3, settings_for(0.1), box, stats);
+}
+
 }    // namespace
 
 // A target that overlaps a bar with free space beside it is put back at its
 // own radius, clear of the bar, near where it was.
 TEST(Regrowth, SeedWithRoomIsPutBackAtItsRadius)
 {
-  std::vector<Particle> reads = {sphere({0, 0, 0}, 0.1, 1, Role::Rebar),
-                                 sphere({0.15, 0, 0}, 0.1, 2, Role::Target)};
+  const std::vector<Particle> reads = bar_and_target();
   RegrowthStats stats;
-  const std::vector<RoundRecord> rec =
-      regrow(reads, {1}, 0.3, settings_for(0.1), open_box(), stats);
+  const std::vector<RoundRecord> rec = regrow_target(reads, open_box(), stats);
   ASSERT_EQ(rec.size(), 1u);
   EXPECT_EQ(rec[0].kind, RecordKind::Placed);
   EXPECT_EQ(rec[0].r, 0.1);
@@ -93,12 +108,9 @@ TEST(Regrowth, SeedWithRoomIsPutBackAtItsRadius)
 // the zone), and the seed still gets its own radius.
 TEST(Regrowth, ZoneMovesAndStaysClear)
 {
-  std::vector<Particle> reads = {sphere({0, 0, 0}, 0.1, 1, Role::Rebar),
-                                 sphere({0.15, 0, 0}, 0.1, 2, Role::Target),
-                                 sphere({0.36, 0, 0}, 0.1, 3, Role::Matrix)};
+  const std::vector<Particle> reads = bar_and_target({sphere({0.36, 0, 0}, 0.1, 3, Role::Matrix)});
   RegrowthStats stats;
-  const std::vector<RoundRecord> rec =
-      regrow(reads, {1}, 0.3, settings_for(0.1), open_box(), stats);
+  const std::vector<RoundRecord> rec = regrow_target(reads, open_box(), stats);
   ASSERT_EQ(rec.size(), 2u);
   EXPECT_EQ(rec[0].kind, RecordKind::Placed);
   EXPECT_EQ(rec[1].kind, RecordKind::Pushed);
@@ -114,8 +126,7 @@ TEST(Regrowth, ZoneMovesAndStaysClear)
 // cannot fit: it is deleted and nothing else changes.
 TEST(Regrowth, SeedWithoutRoomIsDeletedAndTheZoneLeftAsItWas)
 {
-  std::vector<Particle> reads = {sphere({0, 0, 0}, 0.1, 1, Role::Rebar),
-                                 sphere({0.15, 0, 0}, 0.1, 2, Role::Target)};
+  std::vector<Particle> reads = bar_and_target();
   std::int64_t id = 10;
   for (Vec3 d : {Vec3{0.2, 0, 0}, Vec3{0, 0.2, 0}, Vec3{0, -0.2, 0}, Vec3{0, 0, 0.2},
                  Vec3{0, 0, -0.2}}) {
@@ -124,8 +135,7 @@ TEST(Regrowth, SeedWithoutRoomIsDeletedAndTheZoneLeftAsItWas)
     reads.push_back(p);
   }
   RegrowthStats stats;
-  const std::vector<RoundRecord> rec =
-      regrow(reads, {1}, 0.3, settings_for(0.1), open_box(), stats);
+  const std::vector<RoundRecord> rec = regrow_target(reads, open_box(), stats);
   ASSERT_EQ(rec.size(), 1u);
   EXPECT_EQ(rec[0].kind, RecordKind::Deleted);
   EXPECT_EQ(rec[0].id, 2);
@@ -155,17 +165,16 @@ TEST(Regrowth, SeedInsideABarIsDisplaced)
 // seed is deleted rather than put through it; a little farther, it fits.
 TEST(Regrowth, WallsRefuseMoves)
 {
-  std::vector<Particle> reads = {sphere({0, 0, 0}, 0.1, 1, Role::Rebar),
-                                 sphere({0.15, 0, 0}, 0.1, 2, Role::Target)};
+  const std::vector<Particle> reads = bar_and_target();
   Domain box = open_box();
   box.lo = {-1, -0.1, -0.1};
   box.hi = {0.26, 0.1, 0.1};    // a sphere clear of the bar (x >= 0.2) pokes out
   RegrowthStats stats;
-  std::vector<RoundRecord> rec = regrow(reads, {1}, 0.3, settings_for(0.1), box, stats);
+  std::vector<RoundRecord> rec = regrow_target(reads, box, stats);
   ASSERT_EQ(rec.size(), 1u);
   EXPECT_EQ(rec[0].kind, RecordKind::Deleted);
   box.hi = {0.31, 0.1, 0.1};
-  rec = regrow(reads, {1}, 0.3, settings_for(0.1), box, stats);
+  rec = regrow_target(reads, box, stats);
   ASSERT_EQ(rec.size(), 1u);
   EXPECT_EQ(rec[0].kind, RecordKind::Placed);
   EXPECT_LE(largest_overlap_after(reads, rec), 1e-6);

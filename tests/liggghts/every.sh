@@ -15,19 +15,4 @@ here=$(cd "$(dirname "$0")" && pwd)
    -var data "$work/scene.data" -var out "$work" -log "$work/log" -screen none) ||
   { echo "FAIL: liggghts_reinforce exited non-zero"; tail -5 "$work/log"; exit 1; }
 grep -q '^EVERY done' "$work/log" || { echo "FAIL: the input did not finish"; exit 1; }
-grep '^fix reinforce/invert: [0-9]' "$work/log"
-invocations=$(grep -c '^fix reinforce/invert: [0-9]' "$work/log")
-[ "$invocations" -eq 4 ] || { echo "FAIL: $invocations invocations, expected 4"; exit 1; }
-first=$(grep '^fix reinforce/invert: [0-9]' "$work/log" | sed -n 1p | awk '{print $3}')
-# The summary line: "fix reinforce/invert: T targets, R relocated, D deleted ...".
-later=$(grep '^fix reinforce/invert: [0-9]' "$work/log" | sed -n 3p | sed -nE 's/^fix reinforce\/invert: [0-9]+ targets, ([0-9]+) relocated, .*/\1/p')
-echo "relocated at step 40: ${later:-?}"
-[ "$first" -gt 0 ] || { echo "FAIL: no targets at the first invocation"; exit 1; }
-[ "${later:-0}" -gt 0 ] || { echo "FAIL: the second bar's targets were not relocated at step 40"; exit 1; }
-last=$(grep '^fix reinforce/invert: [0-9]' "$work/log" | sed -n 4p)
-"$here/../scripts/last_invocation.sh" "$build/tests/check_scene" "$work/before_last.dump" "$work/after.dump" \
-  "$last" --rmin 0.004 --rmax 0.008 || exit 1
-read -r _ _ _ _ _ matrix_rebar _ _ < <("$build/tests/check_scene" --stats "$work/after.dump" --rmin 0.004)
-echo "largest matrix-bar overlap at the end: $matrix_rebar rmin"
-awk -v o="$matrix_rebar" 'BEGIN {exit !(o <= 1e-6)}' || { echo "FAIL: a matrix sphere overlaps a bar"; exit 1; }
-echo "PASS: relocation every N steps"
+"$here/../scripts/every_checks.sh" "$build" "$work"
