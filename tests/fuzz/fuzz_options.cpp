@@ -3,6 +3,7 @@
 // give options that satisfy every documented invariant or throw
 // OptionError, never anything else.
 #include "fix_options.h"
+#include "regrowth.h"
 
 #include <cmath>
 #include <cstdint>
@@ -21,7 +22,7 @@ namespace {
 // reach is finite, with the scene's radii and box taken from the input too.
 void numeric_arguments(const std::uint8_t *data, std::size_t size)
 {
-  double v[10];
+  double v[11];
   if (size < sizeof v) return;
   std::memcpy(v, data, sizeof v);
   auto word = [](double x) {
@@ -29,23 +30,15 @@ void numeric_arguments(const std::uint8_t *data, std::size_t size)
     std::snprintf(text, sizeof text, "%.17g", x);
     return std::string(text);
   };
-  const std::vector<std::string> args = {"0",
-                                         "bars",
-                                         "radius",
-                                         word(v[0]),
-                                         word(v[1]),
-                                         "search",
-                                         word(v[2]),
-                                         "zone",
-                                         word(v[3]),
-                                         "push",
-                                         word(v[4]),
-                                         "tol",
-                                         word(v[5]),
-                                         "displaced",
-                                         word(v[6]),
-                                         "size",
-                                         (data[0] & 1) ? "keep" : "fit"};
+  std::vector<std::string> args = {"0", "bars", "radius", word(v[0]), word(v[1])};
+  const char *keywords[] = {"search", "zone", "push", "tol", "displaced", "regrow"};
+  const int value_of[] = {2, 3, 4, 5, 6, 10};
+  for (int k = 0; k < 6; ++k) {
+    args.push_back(keywords[k]);
+    args.push_back(word(v[value_of[k]]));
+  }
+  args.push_back("size");
+  args.push_back((data[0] & 1) ? "keep" : "fit");
   try {
     const FixOptions o = parse_fix_arguments(args);
     if (!(o.tol >= kMinTol && o.tol < 1)) __builtin_trap();
@@ -56,6 +49,9 @@ void numeric_arguments(const std::uint8_t *data, std::size_t size)
     const bool physical = std::fabs(v[8]) < 1e100 && std::fabs(v[9]) < 1e100;
     if (physical && (!std::isfinite(f.read) || !std::isfinite(f.write) || !std::isfinite(s.search)))
       __builtin_trap();
+    // The regrowth's zone (asked for here): positive, and its reach finite.
+    const RegrowthReach g = regrowth_reach(s.regrow, std::fabs(v[8]), std::fabs(v[8]));
+    if (physical && (!(s.regrow > 0) || !std::isfinite(g.read))) __builtin_trap();
   } catch (const OptionError &) {
   }
 }

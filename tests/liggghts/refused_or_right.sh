@@ -8,16 +8,10 @@
 set -uo pipefail
 name=$1 np=$2 build=$3 refusal=$4
 shift 4
-[ "$1" = "--" ] && shift
-make=()
-while [ "$1" != "--" ]; do make+=("$1"); shift; done
-shift
-vars=()
-while [ $# -gt 0 ] && [ "$1" != "--" ]; do vars+=("$1"); shift; done
-[ $# -gt 0 ] && shift
-check_args=("$@")
 here=$(cd "$(dirname "$0")" && pwd)
 . "$(dirname "${BASH_SOURCE[0]}")/../scripts/test_env.sh" "liggghts_${name}"
+split_lists "$@"
+make=("${list_a[@]}") vars=("${list_b[@]}")
 "$build/tests/make_scene" "$work/scene.data" "${make[@]}" || { echo "FAIL: make_scene"; exit 1; }
 (cd "$here" && timeout 120 mpirun -np "$np" "$build/src/liggghts/liggghts_reinforce" -in in.scene \
    -var data "$work/scene.data" -var out "$work" -log "$work/log" -screen none "${vars[@]}") \
@@ -35,6 +29,6 @@ if [ "$status" -ne 0 ]; then
   exit 0
 fi
 grep '^fix reinforce/invert: [0-9]' "$work/log"
-"$build/tests/check_scene" --before "$work/before.dump" --after "$work/after.dump" "${check_args[@]}" ||
+"$build/tests/check_scene" --before "$work/before.dump" --after "$work/after.dump" "${list_c[@]}" ||
   { echo "FAIL: $name np=$np: the fix ran and wrote a wrong result"; exit 1; }
 echo "PASS $name np=$np: relocated correctly"

@@ -11,15 +11,10 @@
 set -uo pipefail
 name=$1 np=$2 build=$3 refusal=$4
 shift 4
-[ "$1" = "--" ] && shift
-make=()
-while [ "$1" != "--" ]; do make+=("$1"); shift; done
-shift
-vars=()
-while [ $# -gt 0 ] && [ "$1" != "--" ]; do vars+=("$1"); shift; done
-[ $# -gt 0 ] && shift
 here=$(cd "$(dirname "$0")" && pwd)
 . "$(dirname "${BASH_SOURCE[0]}")/test_env.sh" "refused_${name}"
+split_lists "$@"
+make=("${list_a[@]}") vars=("${list_b[@]}")
 "$build/tests/make_scene" "$work/scene.data" "${make[@]}" || exit 2
 launch=(mpirun -np "$np")
 [ "$np" -eq 1 ] && launch=()
@@ -42,6 +37,6 @@ if [ "$status" -ne 0 ]; then
   exit 0
 fi
 deleted=$(awk '/^TOTALS/ {print $4}' "$work/log" | tail -1)
-"$build/tests/check_scene" --before "$work/before.dump" --after "$work/after.dump" --deleted "${deleted:-0}" "$@" \
+"$build/tests/check_scene" --before "$work/before.dump" --after "$work/after.dump" --deleted "${deleted:-0}" "${list_c[@]}" \
   || { echo "FAIL: $name np=$np: the fix ran and wrote a wrong result"; exit 1; }
 echo "PASS $name np=$np: right"
