@@ -109,51 +109,80 @@ TEST(FixOptions, AllKeywords)
   EXPECT_EQ(parse_fix_arguments({"0", "bars", "displaced", "none"}).displaced, 2);
 }
 
-TEST(FixOptions, ErrorsNameTheProblem)
+// Every ERROR text of the parser, from one table: the arguments after
+// "fix ID group-ID reinforce/invert" and the whole message. The hosts'
+// input-script tests check only that such a message reaches their ERROR
+// line (lammps_error_parser_*, liggghts_error_parser_*).
+struct ParserCase {
+  std::vector<std::string> args;
+  const char *message;    // after "Illegal fix reinforce/invert command: "
+};
+
+const ParserCase kParserCases[] = {
+    {{}, "expected N and a rebar group ID"},
+    {{"0"}, "expected N and a rebar group ID"},
+    {{"-1", "bars"}, "N must be >= 0"},
+    {{"x", "bars"}, "expected an integer for N, got 'x'"},
+    {{"0", "bars", "foo", "1"}, "unknown keyword 'foo'"},
+    {{"0", "bars", "tries"}, "missing value for keyword 'tries'"},
+    {{"0", "bars", "radius", "0.1"}, "missing value for keyword 'radius'"},
+    {{"0", "bars", "radius", "0.3", "0.1"}, "radius rmin must be <= rmax"},
+    {{"0", "bars", "radius", "0", "0.1"}, "radius rmin must be > 0"},
+    {{"0", "bars", "radius", "-1", "0.1"}, "radius rmin must be > 0"},
+    {{"0", "bars", "search", "0"}, "search must be > 0"},
+    {{"0", "bars", "search", "nan"}, "expected a number for search, got 'nan'"},
+    {{"0", "bars", "search", "inf"}, "expected a number for search, got 'inf'"},
+    {{"0", "bars", "search", "1e999"}, "expected a number for search, got '1e999'"},
+    {{"0", "bars", "search", "2x"}, "expected a number for search, got '2x'"},
+    {{"0", "bars", "tries", "0"}, "tries must be > 0"},
+    {{"0", "bars", "tries", "1.5"}, "expected an integer for tries, got '1.5'"},
+    {{"0", "bars", "tries", "99999999999"}, "expected an integer for tries, got '99999999999'"},
+    {{"0", "bars", "choose", "best"}, "choose must be 'first' or 'closest', got 'best'"},
+    {{"0", "bars", "unplaced", "drop"}, "unplaced must be 'delete' or 'keep', got 'drop'"},
+    {{"0", "bars", "tol", "-1"}, "tol must be in [1e-10, 1)"},
+    {{"0", "bars", "tol", "1"}, "tol must be in [1e-10, 1)"},
+    {{"0", "bars", "tol", "1e-14"}, "tol must be in [1e-10, 1)"},
+    {{"0", "bars", "tol", "4.9e-324"}, "expected a number for tol, got '4.9e-324'"},
+    {{"0", "bars", "size", "big"}, "size must be 'keep' or 'fit', got 'big'"},
+    {{"0", "bars", "zone", "-1"}, "zone must be >= 0"},
+    {{"0", "bars", "push", "nan"}, "expected a number for push, got 'nan'"},
+    {{"0", "bars", "displaced", "0"}, "displaced must be in (0, 1] or 'none'"},
+    {{"0", "bars", "displaced", "1.5"}, "displaced must be in (0, 1] or 'none'"},
+    {{"0", "bars", "polish", "11"}, "polish must be in 0..10"},
+    {{"0", "bars", "region"}, "missing value for keyword 'region'"},
+    {{"0", "bars", "Radius", "0.01", "0.02"}, "unknown keyword 'Radius'"},
+    {{"0", "bars", "radius", "0.05", "0.05", "0.1"}, "unknown keyword '0.1'"},
+    {{"0", "bars", "choose"}, "missing value for keyword 'choose'"},
+    {{"0", "bars", "unplaced"}, "missing value for keyword 'unplaced'"},
+    {{"0", "bars", "radius", "0.1", "-2"}, "radius rmax must be > 0"},
+    {{"0", "bars", "radius", "nan", "0.1"}, "expected a number for radius rmin, got 'nan'"},
+    {{"0", "bars", "radius", "0.1", "inf"}, "expected a number for radius rmax, got 'inf'"},
+    {{"0", "bars", "search", "-1"}, "search must be > 0"},
+    {{"0", "bars", "search", "1e400"}, "expected a number for search, got '1e400'"},
+    {{"0", "bars", "tries", "-3"}, "tries must be > 0"},
+    {{"0", "bars", "tol", "0"}, "tol must be in [1e-10, 1)"},
+    {{"0", "bars", "tol", "-1e-6"}, "tol must be in [1e-10, 1)"},
+    {{"0", "bars", "tol", "1e-15"}, "tol must be in [1e-10, 1)"},
+    {{"0", "bars", "push", "inf"}, "expected a number for push, got 'inf'"},
+    {{"0", "bars", "displaced", "2"}, "displaced must be in (0, 1] or 'none'"},
+    {{"0", "bars", "tol", "nan"}, "expected a number for tol, got 'nan'"},
+    {{"0", "bars", "tol", "inf"}, "expected a number for tol, got 'inf'"},
+    {{"0", "bars", "polish", "-1"}, "polish must be in 0..10"},
+    {{"0", "bars", "polish", "0.5"}, "expected an integer for polish, got '0.5'"},
+    {{"1.5", "bars"}, "expected an integer for N, got '1.5'"},
+    {{"99999999999", "bars"}, "expected an integer for N, got '99999999999'"},
+    {{"0", "bars", "radius", "-0.1", "0.1"}, "radius rmin must be > 0"},
+    {{"0", "bars", "tol", "1e-13"}, "tol must be in [1e-10, 1)"},
+};
+
+TEST(FixOptions, EveryParserErrorText)
 {
   const std::string I = "Illegal fix reinforce/invert command: ";
-  EXPECT_EQ(error_of({}), I + "expected N and a rebar group ID");
-  EXPECT_EQ(error_of({"0"}), I + "expected N and a rebar group ID");
-  EXPECT_EQ(error_of({"-1", "bars"}), I + "N must be >= 0");
-  EXPECT_EQ(error_of({"x", "bars"}), I + "expected an integer for N, got 'x'");
-  EXPECT_EQ(error_of({"0", "bars", "foo", "1"}), I + "unknown keyword 'foo'");
-  EXPECT_EQ(error_of({"0", "bars", "tries"}), I + "missing value for keyword 'tries'");
-  EXPECT_EQ(error_of({"0", "bars", "radius", "0.1"}), I + "missing value for keyword 'radius'");
-  EXPECT_EQ(error_of({"0", "bars", "radius", "0.3", "0.1"}), I + "radius rmin must be <= rmax");
-  EXPECT_EQ(error_of({"0", "bars", "radius", "0", "0.1"}), I + "radius rmin must be > 0");
-  EXPECT_EQ(error_of({"0", "bars", "radius", "-1", "0.1"}), I + "radius rmin must be > 0");
-  EXPECT_EQ(error_of({"0", "bars", "search", "0"}), I + "search must be > 0");
-  EXPECT_EQ(error_of({"0", "bars", "search", "nan"}),
-            I + "expected a number for search, got 'nan'");
-  EXPECT_EQ(error_of({"0", "bars", "search", "inf"}),
-            I + "expected a number for search, got 'inf'");
-  EXPECT_EQ(error_of({"0", "bars", "search", "1e999"}),
-            I + "expected a number for search, got '1e999'");
-  EXPECT_EQ(error_of({"0", "bars", "search", "2x"}), I + "expected a number for search, got '2x'");
-  EXPECT_EQ(error_of({"0", "bars", "tries", "0"}), I + "tries must be > 0");
-  EXPECT_EQ(error_of({"0", "bars", "tries", "1.5"}),
-            I + "expected an integer for tries, got '1.5'");
-  EXPECT_EQ(error_of({"0", "bars", "tries", "99999999999"}),
-            I + "expected an integer for tries, got '99999999999'");
-  EXPECT_EQ(error_of({"0", "bars", "choose", "best"}),
-            I + "choose must be 'first' or 'closest', got 'best'");
-  EXPECT_EQ(error_of({"0", "bars", "unplaced", "drop"}),
-            I + "unplaced must be 'delete' or 'keep', got 'drop'");
-  EXPECT_EQ(error_of({"0", "bars", "tol", "-1"}), I + "tol must be in [1e-10, 1)");
-  EXPECT_EQ(error_of({"0", "bars", "tol", "1"}), I + "tol must be in [1e-10, 1)");
-  // Below the floor, rounding would reject the very spheres a solution is
-  // tangent to.
-  EXPECT_EQ(error_of({"0", "bars", "tol", "1e-14"}), I + "tol must be in [1e-10, 1)");
-  EXPECT_EQ(error_of({"0", "bars", "tol", "4.9e-324"}),
-            I + "expected a number for tol, got '4.9e-324'");    // a denormal: out of range
-  EXPECT_EQ(error_of({"0", "bars", "size", "big"}), I + "size must be 'keep' or 'fit', got 'big'");
-  EXPECT_EQ(error_of({"0", "bars", "zone", "-1"}), I + "zone must be >= 0");
-  EXPECT_EQ(error_of({"0", "bars", "push", "nan"}), I + "expected a number for push, got 'nan'");
-  EXPECT_EQ(error_of({"0", "bars", "displaced", "0"}), I + "displaced must be in (0, 1] or 'none'");
-  EXPECT_EQ(error_of({"0", "bars", "displaced", "1.5"}),
-            I + "displaced must be in (0, 1] or 'none'");
-  EXPECT_EQ(error_of({"0", "bars", "polish", "11"}), I + "polish must be in 0..10");
-  EXPECT_EQ(error_of({"0", "bars", "region"}), I + "missing value for keyword 'region'");
+  for (const ParserCase &c : kParserCases) {
+    std::string command;
+    for (const std::string &w : c.args) command += " " + w;
+    EXPECT_EQ(error_of(c.args), I + c.message) << "arguments:" << command;
+  }
 }
 
 // walls check|ignore: whether the host's wall fixes are read (check, the
