@@ -276,7 +276,8 @@ TEST(FixOptions, RegrowWidthOrNo)
   EXPECT_EQ(error_of({"0", "bars", "regrow", "-1"}), I + "regrow must be > 0, 'yes' or 'no'");
   EXPECT_EQ(error_of({"0", "bars", "regrow", "maybe"}),
             I + "expected a number for regrow, got 'maybe'");
-  EXPECT_EQ(error_of({"0", "bars", "regrow", "inf"}), I + "expected a number for regrow, got 'inf'");
+  EXPECT_EQ(error_of({"0", "bars", "regrow", "inf"}),
+            I + "expected a number for regrow, got 'inf'");
   EXPECT_EQ(error_of({"0", "bars", "regrow"}), I + "missing value for keyword 'regrow'");
   EXPECT_EQ(error_of({"0", "bars", "regrow", "yes", "unplaced", "keep"}),
             I + "regrow makes room for the targets unplaced keep leaves where they are: use one "

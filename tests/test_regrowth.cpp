@@ -97,7 +97,7 @@ TEST(Regrowth, SeedWithRoomIsPutBackAtItsRadius)
   ASSERT_EQ(rec.size(), 1u);
   EXPECT_EQ(rec[0].kind, RecordKind::Placed);
   EXPECT_EQ(rec[0].r, 0.1);
-  EXPECT_GE(norm(rec[0].v), 0.2 - 1e-7);    // clear of the bar
+  EXPECT_GE(norm(rec[0].v), 0.2 - 1e-7);                 // clear of the bar
   EXPECT_LE(norm(rec[0].v - Vec3{0.15, 0, 0}), 0.15);    // near where it was (half the width)
   EXPECT_LE(largest_overlap_after(reads, rec), 1e-6);
   EXPECT_EQ(stats.regrown, 1);
@@ -128,8 +128,8 @@ TEST(Regrowth, SeedWithoutRoomIsDeletedAndTheZoneLeftAsItWas)
 {
   std::vector<Particle> reads = bar_and_target();
   std::int64_t id = 10;
-  for (Vec3 d : {Vec3{0.2, 0, 0}, Vec3{0, 0.2, 0}, Vec3{0, -0.2, 0}, Vec3{0, 0, 0.2},
-                 Vec3{0, 0, -0.2}}) {
+  for (Vec3 d :
+       {Vec3{0.2, 0, 0}, Vec3{0, 0.2, 0}, Vec3{0, -0.2, 0}, Vec3{0, 0, 0.2}, Vec3{0, 0, -0.2}}) {
     Particle p = sphere(Vec3{0.15, 0, 0} + d, 0.1, id++, Role::Matrix);
     p.pushable = false;    // outside the fix group: obstacles only
     reads.push_back(p);
@@ -214,7 +214,9 @@ TEST(Regrowth, OrderFreeFiniteAndWithinTheZone)
   EXPECT_EQ(flat_a, flat_b);
   for (const RoundRecord &r : a) {
     EXPECT_TRUE(is_finite(r.v));
-    if (r.kind == RecordKind::Pushed) EXPECT_LE(norm(r.v), 0.3);
+    if (r.kind == RecordKind::Pushed) {
+      EXPECT_LE(norm(r.v), 0.3);
+    }
   }
   EXPECT_EQ(s1.seeds, static_cast<std::int64_t>(seeds.size()));
   EXPECT_EQ(s1.regrown + s1.deleted, s1.seeds);

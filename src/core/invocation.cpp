@@ -1,9 +1,8 @@
 #include "invocation.h"
 
-#include "regrowth_stage.h"
-#include "relocation_stage.h"
+#include "invocation_phases.h"
+
 #include "round_runner.h"
-#include "schedule.h"
 
 #include <algorithm>
 #include <array>
@@ -12,8 +11,6 @@
 #include <unordered_map>
 
 namespace reinforce {
-
-namespace {
 
 // The engine's view of the atoms that can matter: those within `margin` of
 // a rebar sphere and inside the domain's view bounds. Every atom is an
@@ -49,6 +46,35 @@ std::vector<Particle> make_view(const AtomArrays &a, double margin, const Domain
   }
   return view;
 }
+
+// The lattice for a stage whose unit of work writes within `write` and
+// reads within `read` of its particle, the ghost reach that needs (raised
+// on the host), this process's view bounds and its partners.
+void plan_rounds(HostHooks &host, double write, double read, const char *stage, Plan &plan)
+{
+  const Domain &box = plan.box;
+  plan.lattice = make_block_lattice(box.lo, box.hi, box.periodic, write + read);
+  // The owner of a block's centre sees the whole block plus the read
+  // reach: how far a block reaches past a subdomain depends on where the
+  // subdomain's faces fall on the lattice, so the largest over processes.
+  const double beyond = host.max(plan.lattice.reach_beyond(box.sub_lo, box.sub_hi));
+  const double cutoff = beyond + read;
+  if (!std::isfinite(cutoff))
+    host.fail(std::string("Fix reinforce/invert: the reach of the ") + stage + " is not finite");
+  host.ensure_ghost_cutoff(cutoff);
+  // The view needs no more than the cutoff past the subdomain, whatever
+  // the host's ghosts hold: the results of the rounds reach this process
+  // only from the processes that can change something within that
+  // (exchange_partners).
+  plan.domain = host.placement_domain();
+  for (int d = 0; d < 3; ++d) {
+    plan.domain.view_lo[d] = std::max(plan.domain.view_lo[d], plan.domain.sub_lo[d] - cutoff);
+    plan.domain.view_hi[d] = std::min(plan.domain.view_hi[d], plan.domain.sub_hi[d] + cutoff);
+  }
+  plan.partners = exchange_partners(host, plan.domain, beyond, write, cutoff);
+}
+
+namespace {
 
 bool is_matrix(const AtomArrays &a, int i)
 {
@@ -116,13 +142,6 @@ std::string unplaced_line(const Stats &s, std::int64_t no_place, double rmin, do
 
 namespace {
 
-// The matrix and the rebar as this invocation finds them, over all
-// processes; stops at an empty rebar group or a sphere of radius 0.
-struct AtomRanges {
-  double matrix_rmin = INFINITY, matrix_rmax = 0, largest = 0;
-  bool any_matrix = false;
-};
-
 AtomRanges check_atoms(HostHooks &host, const FixOptions &options)
 {
   const AtomArrays a = host.atoms();
@@ -162,43 +181,6 @@ AtomRanges check_atoms(HostHooks &host, const FixOptions &options)
   return out;
 }
 
-// The settings, the schedule, the ghost reach it needs (raised on the
-// host) and this process's view bounds and partners.
-struct Plan {
-  Settings settings;
-  Domain box, domain;
-  BlockLattice lattice;
-  std::vector<int> partners;
-  double margin = 0;    // the view: atoms within this of a rebar sphere
-};
-
-// The lattice for a stage whose unit of work writes within `write` and
-// reads within `read` of its particle, the ghost reach that needs (raised
-// on the host), this process's view bounds and its partners.
-void plan_rounds(HostHooks &host, double write, double read, const char *stage, Plan &plan)
-{
-  const Domain &box = plan.box;
-  plan.lattice = make_block_lattice(box.lo, box.hi, box.periodic, write + read);
-  // The owner of a block's centre sees the whole block plus the read
-  // reach: how far a block reaches past a subdomain depends on where the
-  // subdomain's faces fall on the lattice, so the largest over processes.
-  const double beyond = host.max(plan.lattice.reach_beyond(box.sub_lo, box.sub_hi));
-  const double cutoff = beyond + read;
-  if (!std::isfinite(cutoff))
-    host.fail(std::string("Fix reinforce/invert: the reach of the ") + stage + " is not finite");
-  host.ensure_ghost_cutoff(cutoff);
-  // The view needs no more than the cutoff past the subdomain, whatever
-  // the host's ghosts hold: the results of the rounds reach this process
-  // only from the processes that can change something within that
-  // (exchange_partners).
-  plan.domain = host.placement_domain();
-  for (int d = 0; d < 3; ++d) {
-    plan.domain.view_lo[d] = std::max(plan.domain.view_lo[d], plan.domain.sub_lo[d] - cutoff);
-    plan.domain.view_hi[d] = std::min(plan.domain.view_hi[d], plan.domain.sub_hi[d] + cutoff);
-  }
-  plan.partners = exchange_partners(host, plan.domain, beyond, write, cutoff);
-}
-
 Plan prepare(HostHooks &host, const FixOptions &options, const AtomRanges &ranges)
 {
   Plan plan;
@@ -223,15 +205,6 @@ Plan prepare(HostHooks &host, const FixOptions &options, const AtomRanges &range
   plan.margin = reach.read + 2 * ranges.largest;
   return plan;
 }
-
-// The view with its targets marked (owned ones by this process, ghost ones
-// from their owners), and what the log needs about them.
-struct Marked {
-  AtomArrays a;
-  std::vector<int> local;
-  std::vector<Particle> view;
-  double target_rmin = INFINITY, target_rmax = 0, rebar_rmax = 0;
-};
 
 // The owned matrix spheres of the fix group that overlap a rebar sphere by
 // more than tol * min radius. Each process marks only its own (owned)
@@ -315,74 +288,6 @@ Marked mark_targets(HostHooks &host, const Plan &plan, const AtomRanges &ranges,
   return m;
 }
 
-// The schedule line of a stage: its rounds, its units of work and how
-// evenly they fell on the processes (1 = even).
-void log_schedule(HostHooks &host, const char *stage, const char *units, const RoundsDone &done,
-                  double work)
-{
-  char line[300];
-  std::snprintf(line, sizeof line,
-                "fix reinforce/invert: %s: %d rounds, %.0f %s in %.0f blocks, busiest "
-                "process %.0f %s over the rounds, balance %.2f over %.0f processes\n",
-                stage, done.rounds, work, units, done.blocks, done.busiest, units,
-                work / (done.busiest * done.processes), done.processes);
-  host.log(line);
-}
-
-// The regrowth of the targets the relocation left pending: a view made
-// again after the host's refresh (the relocation moved atoms across
-// subdomains), its own lattice and ghost reach.
-void regrow_pending(HostHooks &host, const Plan &relocation_plan, const AtomRanges &ranges,
-                    Totals &totals)
-{
-  const double start = host.wall_time();
-  Plan plan = relocation_plan;
-  const RegrowthReach reach =
-      regrowth_reach(plan.settings.regrow, ranges.matrix_rmax, ranges.largest);
-  plan_rounds(host, reach.write, reach.read, "regrowth", plan);
-  host.refresh();
-  const AtomArrays a = host.atoms();
-  std::vector<int> local;
-  std::vector<Particle> view = make_view(a, reach.read + 2 * ranges.largest, plan.domain, local);
-  RegrowthStage regrowth(plan.settings, plan.domain, plan.lattice, plan.settings.regrow,
-                         ranges.matrix_rmax, ranges.largest, totals.regrowth);
-  std::vector<int> doomed;
-  const RoundsDone done = run_rounds(host, regrowth, {plan.lattice, plan.box, plan.domain, plan.partners},
-                                     std::move(view), local, a, doomed);
-  host.remove(doomed);
-  const double seeds = host.sum(static_cast<double>(totals.regrowth.seeds));
-  if (done.rounds > 0) log_schedule(host, "regrowth schedule", "targets", done, seeds);
-  totals.regrowth_seconds = host.max(host.wall_time() - start);
-}
-
-// The stages on the schedule (relocation, then the regrowth where targets
-// are left without a place), the deletions, and the schedule lines.
-void run_stages(HostHooks &host, const FixOptions &options, const Plan &plan,
-                const AtomRanges &ranges, Marked &m, Totals &totals)
-{
-  const Settings &settings = plan.settings;
-  double view_largest = settings.rmax;
-  for (const Particle &p : m.view) view_largest = std::max(view_largest, p.r);
-  const Unplaced unplaced = options.keep_unplaced
-                                ? Unplaced::Keep
-                                : (settings.regrow > 0 ? Unplaced::Defer : Unplaced::Delete);
-  RelocationStage relocation(settings, plan.domain, unplaced, m.target_rmin, m.target_rmax,
-                             footprint(settings, m.target_rmax, view_largest).read, totals.stats);
-  std::vector<int> doomed;
-  const RoundsDone done =
-      run_rounds(host, relocation, {plan.lattice, plan.box, plan.domain, plan.partners},
-                 std::move(m.view), m.local, m.a, doomed);
-  totals.rounds = done.rounds;
-  host.remove(doomed);
-  const double targets = host.sum(static_cast<double>(totals.stats.targets));
-  if (totals.rounds == 0) return;
-  log_schedule(host, "schedule", "targets", done, targets);
-  if (unplaced != Unplaced::Defer) return;
-  const Stats &s = totals.stats;
-  if (host.sum(static_cast<double>(s.unplaced - s.displaced)) > 0)
-    regrow_pending(host, plan, ranges, totals);
-}
-
 // The totals over all processes: the table's sums and maxima, each kind
 // by one gather.
 void reduce_totals(HostHooks &host, Totals &t)
@@ -396,38 +301,6 @@ void reduce_totals(HostHooks &host, Totals &t)
     for (const TotalsField &f : totals_fields())
       if (f.reduction == kind) f.set(t, all[k++]);
   }
-}
-
-// The regrowth's outcome in the relocation's totals, so that they say
-// what became of every target: a regrown target is relocated, and its
-// volume is back.
-void fold_regrowth(Totals &t)
-{
-  const RegrowthStats &g = t.regrowth;
-  Stats &s = t.stats;
-  s.relocated += g.regrown;
-  s.unplaced -= g.regrown;
-  s.displaced += g.displaced;
-  s.matrix_deleted += g.deleted_matrix;
-  s.volume_after += g.volume_regrown;
-  s.volume_removed += g.volume_deleted_matrix - g.volume_regrown;
-  s.max_overlap = std::max(s.max_overlap, g.max_overlap);
-}
-
-std::string regrowth_line(const RegrowthStats &g, double seconds)
-{
-  char line[400];
-  std::snprintf(line, sizeof line,
-                "fix reinforce/invert: regrowth: %lld targets without a void, %lld regrown at "
-                "their own radius, %lld deleted (%lld inside the bars), %lld matrix spheres "
-                "deleted, %lld moved (largest %.2f rmin), %lld sweeps, max overlap %.2e rmin, "
-                "%.3f s\n",
-                static_cast<long long>(g.seeds), static_cast<long long>(g.regrown),
-                static_cast<long long>(g.deleted), static_cast<long long>(g.displaced),
-                static_cast<long long>(g.deleted_matrix),
-                static_cast<long long>(g.moved), g.max_move, static_cast<long long>(g.sweeps),
-                g.max_overlap, seconds);
-  return line;
 }
 
 }    // namespace
@@ -461,8 +334,7 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
   reduce_totals(host, totals);
   fold_regrowth(totals);
   const Stats &s = totals.stats;
-  totals.deleted =
-      options.keep_unplaced ? 0 : static_cast<double>(s.unplaced + s.matrix_deleted);
+  totals.deleted = options.keep_unplaced ? 0 : static_cast<double>(s.unplaced + s.matrix_deleted);
   totals.kept = options.keep_unplaced ? static_cast<double>(s.unplaced) : 0;
   totals.seconds = host.max(host.wall_time() - start);
   if (totals.regrowth.seeds > 0) host.log(regrowth_line(totals.regrowth, totals.regrowth_seconds));

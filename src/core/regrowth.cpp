@@ -45,10 +45,10 @@ constexpr double kInnerTol = 0.5;
 
 struct Body {
   Vec3 x, x0;
-  double R = 0;         // its own radius
-  double scale = 1;     // its radius now, over R (below 1 only while a seed grows)
-  double w = 0;         // mobility in the current growth: 1 at its seed, towards 0 at the edge
-  double cap = 0;       // largest distance from x0
+  double R = 0;        // its own radius
+  double scale = 1;    // its radius now, over R (below 1 only while a seed grows)
+  double w = 0;        // mobility in the current growth: 1 at its seed, towards 0 at the edge
+  double cap = 0;      // largest distance from x0
   std::int64_t id = 0;
   bool seed = false, movable = false, rebar = false, present = true;
   bool active = false;    // moves in the current growth
@@ -221,7 +221,8 @@ private:
     active_.assign(1, s);
     seed.active = true;
     bool clear = false;
-    for (int k = 0; k < kAloneSweeps && !clear; ++k) clear = sweep(stats) <= kInnerTol * settings_.tol;
+    for (int k = 0; k < kAloneSweeps && !clear; ++k)
+      clear = sweep(stats) <= kInnerTol * settings_.tol;
     seed.active = false;
     return clear && excess_of(s) == 0;
   }
@@ -234,7 +235,8 @@ private:
     Body &seed = bodies_[s];
     const std::vector<Vec3> places = starts(s);
     bool clear = false;
-    for (std::size_t k = 0; k < places.size() && !clear; ++k) clear = fits_alone(s, places[k], stats);
+    for (std::size_t k = 0; k < places.size() && !clear; ++k)
+      clear = fits_alone(s, places[k], stats);
     if (!clear && !places.empty()) {
       seed.x = places.front();
       clear = try_growth(s, stats);
@@ -270,7 +272,8 @@ private:
         if (sweep(stats) < kSettled) break;
     }
     bool clear = false;
-    for (int k = 0; k < kFinalSweeps && !clear; ++k) clear = sweep(stats) <= kInnerTol * settings_.tol;
+    for (int k = 0; k < kFinalSweeps && !clear; ++k)
+      clear = sweep(stats) <= kInnerTol * settings_.tol;
     for (std::size_t i : active_)
       if (clear && excess_of(i) > 0) clear = false;
     for (std::size_t n = 0; n < active_.size(); ++n) {
@@ -397,8 +400,8 @@ private:
   // moved, else nothing.
   static double allowed(const Body &b, const Body &o, const Contact &c)
   {
-    const bool unmoved = b.x.x == b.x0.x && b.x.y == b.x0.y && b.x.z == b.x0.z &&
-                         o.x.x == o.x0.x && o.x.y == o.x0.y && o.x.z == o.x0.z;
+    const bool unmoved = b.x.x == b.x0.x && b.x.y == b.x0.y && b.x.z == b.x0.z && o.x.x == o.x0.x &&
+                         o.x.y == o.x0.y && o.x.z == o.x0.z;
     return unmoved ? c.allowed : 0;
   }
 
@@ -488,8 +491,7 @@ private:
       double largest = 0;
       for (const Contact &c : contacts_[i]) {
         const Body &o = bodies_[static_cast<std::size_t>(c.j)];
-        if (o.present)
-          largest = std::max(largest, (b.R + o.R - norm(b.x - o.x)) / settings_.rmin);
+        if (o.present) largest = std::max(largest, (b.R + o.R - norm(b.x - o.x)) / settings_.rmin);
       }
       stats.max_overlap = std::max(stats.max_overlap, largest);
     }

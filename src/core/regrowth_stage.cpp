@@ -46,8 +46,7 @@ StageResult RegrowthStage::run(const std::vector<Particle> &reads,
     near.clear();
     std::vector<std::size_t> seeds;
     for (int k : picked) {
-      if (std::binary_search(block.second.begin(), block.second.end(),
-                             static_cast<std::size_t>(k)))
+      if (std::binary_search(block.second.begin(), block.second.end(), static_cast<std::size_t>(k)))
         seeds.push_back(near.size());
       near.push_back(reads[static_cast<std::size_t>(k)]);
     }

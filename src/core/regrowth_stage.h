@@ -12,8 +12,8 @@ namespace reinforce {
 class RegrowthStage : public Stage {
 public:
   // width: the zone around each seed; matrix_rmax, largest_r: the largest
-  // radius of a movable sphere and of any (regrowth_reach); lattice: the schedule's blocks (a block's seeds are
-  // regrown as one zone).
+  // radius of a movable sphere and of any (regrowth_reach); lattice: the schedule's blocks (a
+  // block's seeds are regrown as one zone).
   RegrowthStage(const Settings &settings, const Domain &domain, const BlockLattice &lattice,
                 double width, double matrix_rmax, double largest_r, RegrowthStats &stats);
   int passes() const override { return 1; }

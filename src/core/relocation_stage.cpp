@@ -23,7 +23,8 @@ int RelocationStage::pass_of(const Particle &p) const
 StageResult RelocationStage::run(const std::vector<Particle> &reads,
                                  const std::function<bool(const Particle &)> &mine)
 {
-  const Relocation rel = relocate_targets(reads, settings_, domain_, unplaced_ == Unplaced::Keep, stats_, mine);
+  const Relocation rel =
+      relocate_targets(reads, settings_, domain_, unplaced_ == Unplaced::Keep, stats_, mine);
   return {records_of(rel, unplaced_), rel.targets.size()};
 }
 
