@@ -14,7 +14,7 @@
 //     NeighRequest::set_cutoff_fixed (since August 2026) against set_cutoff.
 
 #if __cplusplus < 201703L
-#error "fix reinforce/invert needs C++17: configure LAMMPS with -D CMAKE_CXX_STANDARD=17 (LAMMPS before 22Jul2025)"
+#error "fix reinforce/invert needs C++17: -D CMAKE_CXX_STANDARD=17 (LAMMPS before 22Jul2025)"
 #endif
 
 #include "fix_reinforce_invert.h"
