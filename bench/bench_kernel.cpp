@@ -7,7 +7,7 @@
 // repeated timed passes over the whole set). Prints a Markdown table.
 //
 // usage: bench_kernel [quadruples per set] [timed passes]
-#include "tangent_sphere.h"
+#include "reinforce_tangent_sphere.h"
 
 #include <algorithm>
 #include <chrono>

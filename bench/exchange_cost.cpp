@@ -6,7 +6,7 @@
 // Prints "partners<TAB>microseconds per round" (median of batches) on rank 0.
 //
 // usage: mpirun -np 2 exchange_cost [doubles per message] [rounds per batch] [batches]
-#include "mpi_gather.h"
+#include "reinforce_mpi_hooks.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,8 +1,8 @@
-// Walls a relocated sphere must not cross (boundaries.h): planes,
+// Walls a relocated sphere must not cross (reinforce_boundaries.h): planes,
 // cylinders and triangles, against independent brute force. Each test
 // states the tolerance it asserts and why; degenerate and extreme inputs
 // are covered, and no NaN or infinity may come out of finite inputs.
-#include "boundaries.h"
+#include "reinforce_boundaries.h"
 
 #include <gtest/gtest.h>
 
@@ -22,7 +22,7 @@ constexpr double kTol = 1e-6;    // the fix's default `tol`
 
 // ---------------------------------------------------------------------------
 // Independent references, in long double, sharing no code with
-// boundaries.cpp (none of its formulas either: Gram systems and signed
+// reinforce_boundaries.cpp (none of its formulas either: Gram systems and signed
 // volumes where it uses projections and cross products with the normal).
 
 using LD = long double;
@@ -142,7 +142,7 @@ double max_edge(const Triangle &t)
 // `borderline` is set when a volume or an end's height is within 1e-9
 // (relative) of zero near the triangle: rounding may decide such a case.
 // Segments in the plane, and degenerate triangles, never meet (as in
-// boundaries.h: the distance test holds those).
+// reinforce_boundaries.h: the distance test holds those).
 bool ref_crosses(Vec3 pd, Vec3 qd, const Triangle &t, bool *borderline)
 {
   const V p = ld(pd), q = ld(qd), a = ld(t.a), b = ld(t.b), c = ld(t.c);
@@ -208,7 +208,7 @@ struct Walls {
 
 enum class Verdict { Admitted, Refused, Unsure };
 
-// The rule of boundaries.h, checked wall by wall with the references above.
+// The rule of reinforce_boundaries.h, checked wall by wall with the references above.
 // Unsure when a quantity that decides it is within 1e-9 of its threshold.
 Verdict ref_admits(const Walls &w, Vec3 from, Vec3 c, double r, double tol)
 {
@@ -871,7 +871,7 @@ TEST(BoundariesAdd, RefusesDegenerateOrNonFiniteWalls)
 }
 
 // A plane or cylinder is either refused or kept as given: its normal or
-// axis is "any length > 0" (boundaries.h), so a very long or very short
+// axis is "any length > 0" (reinforce_boundaries.h), so a very long or very short
 // one, if accepted, must give the same distances as a unit one (to 1e-12).
 TEST(BoundariesAdd, NormalAndAxisLengthDoNotMatter)
 {

@@ -1,7 +1,7 @@
 // Engine tests on synthetic scenes: a jittered polydisperse packing with a
 // bar of overlapping spheres through it, seen by one process.
-#include "cell_grid.h"
-#include "relocation.h"
+#include "reinforce_cell_grid.h"
+#include "reinforce_relocation.h"
 
 #include <gtest/gtest.h>
 

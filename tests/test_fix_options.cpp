@@ -1,6 +1,6 @@
 // The fix's arguments, rounds and summary line (host independent).
-#include "fix_options.h"
-#include "schedule.h"
+#include "reinforce_fix_options.h"
+#include "reinforce_schedule.h"
 
 #include <gtest/gtest.h>
 

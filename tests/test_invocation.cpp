@@ -1,5 +1,5 @@
 // The shared invocation driver, on an in-memory host with one process.
-#include "invocation.h"
+#include "reinforce_invocation.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Kernel tests: spheres tangent to four spheres. Each test states the
 // tolerance it asserts and why.
-#include "tangent_sphere.h"
+#include "reinforce_tangent_sphere.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Regrowth tests on small hand-made zones: a target left without a void,
 // the bar it overlaps, the matrix around it.
-#include "regrowth.h"
+#include "reinforce_regrowth.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // The records a round's results travel as between processes.
-#include "round_records.h"
+#include "reinforce_round_records.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The table of the totals: every f_ID index once, each field read and
 // written where the output vector and the reductions expect it.
-#include "totals.h"
+#include "reinforce_totals.h"
 
 #include <gtest/gtest.h>
 

@@ -36,9 +36,9 @@
 #include "pair.h"
 #endif
 
-#include "fix_options.h"
-#include "invocation.h"
-#include "mpi_gather.h"
+#include "reinforce_fix_options.h"
+#include "reinforce_invocation.h"
+#include "reinforce_mpi_hooks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -132,13 +132,14 @@ Region *find_region(Domain *domain, const std::string &name)
 
 // ---------------------------------------------------------------------------
 // The engine's host: LAMMPS's atoms and communication behind
-// reinforce::HostHooks. run_invocation() calls every collective hook on all
+// reinforce::HostHooks (the MPI hooks are reinforce::MpiHooks, shared with
+// the LIGGGHTS adapter). run_invocation() calls every collective hook on all
 // processes; move() and remove() only on the processes of the current round.
 // ---------------------------------------------------------------------------
 
-class FixReinforceInvert::Host : public reinforce::HostHooks {
+class FixReinforceInvert::Host : public reinforce::MpiHooks {
 public:
-  explicit Host(FixReinforceInvert &fix) : f(fix), exchange(fix.world) {}
+  explicit Host(FixReinforceInvert &fix) : MpiHooks(fix.world), f(fix) {}
   // A raised ghost cutoff is put back on every way out of the invocation,
   // also when an ERROR unwinds through it (LAMMPS built with exceptions, or
   // used as a library): the host's next run must not keep the raised value.
@@ -355,43 +356,6 @@ public:
   }
 #endif
 
-  double sum(double v) override
-  {
-    double out = 0;
-    MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_SUM, f.world);
-    return out;
-  }
-
-  double max(double v) override
-  {
-    double out = 0;
-    MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_MAX, f.world);
-    return out;
-  }
-
-  std::vector<double> gather_all(const std::vector<double> &mine) override
-  {
-    return reinforce::mpi_gather_all(mine, f.world);
-  }
-
-  void post_results(const std::vector<double> &mine, const std::vector<int> &ranks) override
-  {
-    exchange.post(mine, ranks);
-  }
-  std::vector<double> collect_results(const std::vector<int> &ranks) override
-  {
-    return exchange.collect(ranks);
-  }
-  void finish_results() override
-  {
-    exchange.finish();
-  }
-
-  double wall_time() override
-  {
-    return MPI_Wtime();
-  }
-
   void log(const std::string &line) override
   {
     if (f.comm->me == 0) utils::logmesg(f.lmp, line);
@@ -412,7 +376,6 @@ public:
 
 private:
   FixReinforceInvert &f;
-  reinforce::MpiExchange exchange;
   double saved_cutghostuser = 0;
   bool raised = false;
   bool binned = false;        // source-built: bins set up for a raised cutoff

@@ -17,7 +17,7 @@
 #include "tri_mesh.h"
 #include "update.h"
 
-#include "mpi_gather.h"
+#include "reinforce_mpi_hooks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -139,37 +139,6 @@ void FixReinforceInvert::post_run()
   if (!invoked_)
     warn("Fix reinforce/invert did not relocate: the setup of this run was skipped (run pre no); "
          "it relocates at the setup of a run with pre yes");
-}
-
-void FixReinforceInvert::invoke()
-{
-  invoked_ = true;
-  // Atoms created since the last invocation (insert/pack, create_atoms)
-  // carry no flag yet: every flag starts clear.
-  std::fill(pending_, pending_ + nmax_, 0);
-  if (region_) region_->prematch();
-  check_multisphere_bodies();
-  read_walls();
-  find_anchors();
-  // A raised ghost cutoff is put back on every way out, also when an error
-  // unwinds through the invocation (a host built to throw).
-  struct RestoreGhostCutoff {
-    FixReinforceInvert *fix;
-    ~RestoreGhostCutoff() { fix->restore_ghost_cutoff(); }
-  } restore{this};
-  exchange_.reset(new reinforce::MpiExchange(world));
-  const reinforce::Totals t = reinforce::run_invocation(*this, options_);
-  exchange_.reset();
-  warn_anchors();
-  output_ = reinforce::output_vector(t);
-  // As delete_atoms does: the global count and the atom map.
-  bigint nlocal = atom->nlocal;
-  MPI_Allreduce(&nlocal, &atom->natoms, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (atom->map_style) {
-    atom->nghost = 0;
-    atom->map_init();
-    atom->map_set();
-  }
 }
 
 // The fix moves and deletes single spheres: a matrix sphere (fix group, not
@@ -314,7 +283,8 @@ int FixReinforceInvert::add_mesh(FixMeshSurface &fix)
       mesh->node(i, j, p);
       mine.insert(mine.end(), p, p + 3);
     }
-  const std::vector<double> all = mesh->isParallel() ? gather_all(mine) : mine;
+  const std::vector<double> all =
+      mesh->isParallel() ? reinforce::mpi_gather_all(mine, world) : mine;
   for (std::size_t k = 0; k + 9 <= all.size(); k += 9)
     wall_triangles_.push_back({{all[k], all[k + 1], all[k + 2]},
                                {all[k + 3], all[k + 4], all[k + 5]},
@@ -376,7 +346,8 @@ void FixReinforceInvert::find_anchors()
 void FixReinforceInvert::warn_anchors()
 {
   for (const Anchors &a : anchors_) {
-    const long long n = std::llround(sum(static_cast<double>(a.moved.size())));
+    long long mine = static_cast<long long>(a.moved.size()), n = 0;
+    MPI_Allreduce(&mine, &n, 1, MPI_LONG_LONG, MPI_SUM, world);
     if (n > 0)
       warn("Fix reinforce/invert moved " + std::to_string(n) + " atoms held by fix " + a.id +
            " (spring/self): their anchors are still the old positions");
@@ -429,53 +400,7 @@ void FixReinforceInvert::unpack_comm(int n, int first, double *buf)
   for (int k = 0; k < n; ++k) pending_[first + k] = static_cast<int>(buf[k]);
 }
 
-/* ---- reinforce::HostHooks ---- */
-
-void FixReinforceInvert::refresh()
-{
-  domain->pbc();
-  domain->reset_box();
-  comm->setup();
-  comm->exchange();
-  atom->nghost = 0;
-  comm->borders();
-  forward_pending();
-}
-
-reinforce::AtomArrays FixReinforceInvert::atoms()
-{
-  reinforce::AtomArrays a;
-  a.nlocal = atom->nlocal;
-  a.nall = atom->nlocal + atom->nghost;
-  a.x = atom->x;
-  a.radius = atom->radius;
-  a.tag.assign(atom->tag, atom->tag + a.nall);
-  a.mask = atom->mask;
-  a.pending = pending_;
-  a.group_bit = groupbit;
-  a.rebar_bit = rebar_bit_;
-  // The bars of the other reinforce/invert fixes stay as they are.
-  std::vector<std::string> others;
-  for (int k = 0; k < modify->nfix; ++k) {
-    Fix *f = modify->fix[k];
-    if (f == this || std::strcmp(f->style, "reinforce/invert") != 0) continue;
-    a.frozen_bits |= static_cast<FixReinforceInvert *>(f)->rebar_bit_;
-    others.push_back(f->id);
-  }
-  for (std::size_t k = 0; k < others.size(); ++k)
-    a.frozen_by += (k == 0 ? (others.size() == 1 ? "fix " : "fixes ") : ", ") + others[k];
-  return a;
-}
-
-void FixReinforceInvert::set_pending(int local, bool pending)
-{
-  pending_[local] = pending ? 1 : 0;
-}
-
-void FixReinforceInvert::forward_pending()
-{
-  comm->forward_comm_fix(this);
-}
+/* ---- the engine's host ---- */
 
 // LIGGGHTS's granular optimisation (Comm::use_gran_opt, inline in comm_I.h,
 // on for every orthogonal box whose atoms have a radius) acquires ghosts
@@ -489,126 +414,6 @@ bool FixReinforceInvert::granular_ghosts()
 double FixReinforceInvert::ghost_reach(int d)
 {
   return granular_ghosts() ? 0.5 * (comm->cutghost[d] + neighbor->skin) : comm->cutghost[d];
-}
-
-void FixReinforceInvert::ensure_ghost_cutoff(double reach)
-{
-  const double have = std::min({ghost_reach(0), ghost_reach(1), ghost_reach(2)});
-  if (have >= reach) return;
-  // A second raise (the regrowth) restores the user's value too.
-  if (user_cutghost_ < 0) user_cutghost_ = comm->cutghostuser;
-  comm->cutghostuser = granular_ghosts() ? 2 * reach : reach;
-  refresh();
-  char line[200];
-  std::snprintf(line, sizeof line,
-                "fix reinforce/invert: ghost cutoff raised from %g to %g for the relocation\n",
-                have, reach);
-  log(line);
-}
-
-void FixReinforceInvert::restore_ghost_cutoff()
-{
-  if (user_cutghost_ < 0) return;
-  comm->cutghostuser = user_cutghost_;
-  user_cutghost_ = -1;
-  comm->setup();
-}
-
-reinforce::Domain FixReinforceInvert::placement_domain()
-{
-  reinforce::Domain d;
-  for (int k = 0; k < 3; ++k) {
-    d.lo[k] = domain->boxlo[k];
-    d.hi[k] = domain->boxhi[k];
-    d.periodic[k] = domain->periodicity[k] != 0;
-    d.view_lo[k] = domain->sublo[k] - ghost_reach(k);
-    d.view_hi[k] = domain->subhi[k] + ghost_reach(k);
-    d.sub_lo[k] = domain->sublo[k];
-    d.sub_hi[k] = domain->subhi[k];
-  }
-  if (region_) {
-    // match_shrinkby_cut(x, cut) is match(x) and no contact with the
-    // region's surface closer than cut on the region's side: for side in
-    // the centre is inside and surface_interior finds no face within cut,
-    // for side out it is outside the shape and surface_exterior finds none
-    // (the distances fix wall/region uses). Either way the ball of radius
-    // cut lies wholly in the region. (region.h calls it "OR"; the code is
-    // AND.) A moving region was set for this step by prematch in invoke.
-    Region *region = region_;
-    d.region = [region](const reinforce::Vec3 &c, double r) {
-      double x[3] = {c.x, c.y, c.z};
-      return region->match_shrinkby_cut(x, r) != 0;
-    };
-  }
-  d.walls = walls_in_view();
-  return d;
-}
-
-void FixReinforceInvert::move(int i, reinforce::Vec3 x, double r)
-{
-  const double scale = r / atom->radius[i];
-  for (int k = 0; k < 3; ++k) {
-    atom->x[i][k] = x[k];
-    atom->v[i][k] = 0;
-    if (atom->omega_flag) atom->omega[i][k] = 0;
-  }
-  atom->rmass[i] *= scale * scale * scale;    // same material density
-  atom->radius[i] = r;
-  pending_[i] = 0;
-  for (Anchors &a : anchors_)
-    if (atom->mask[i] & a.bit) a.moved.insert(atom->tag[i]);
-}
-
-// As delete_atoms does: the last owned atom moves into each hole (avec->copy
-// also carries every fix's per-atom data). Highest index first, so a moved
-// atom is never one still to be removed.
-void FixReinforceInvert::remove(std::vector<int> &locals)
-{
-  std::sort(locals.rbegin(), locals.rend());
-  for (int i : locals) {
-    atom->avec->copy(atom->nlocal - 1, i, 1);
-    atom->nlocal--;
-  }
-}
-
-double FixReinforceInvert::sum(double v)
-{
-  double out;
-  MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_SUM, world);
-  return out;
-}
-
-std::vector<double> FixReinforceInvert::gather_all(const std::vector<double> &mine)
-{
-  return reinforce::mpi_gather_all(mine, world);
-}
-
-void FixReinforceInvert::post_results(const std::vector<double> &mine,
-                                      const std::vector<int> &ranks)
-{
-  exchange_->post(mine, ranks);
-}
-
-std::vector<double> FixReinforceInvert::collect_results(const std::vector<int> &ranks)
-{
-  return exchange_->collect(ranks);
-}
-
-void FixReinforceInvert::finish_results()
-{
-  exchange_->finish();
-}
-
-double FixReinforceInvert::max(double v)
-{
-  double out;
-  MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_MAX, world);
-  return out;
-}
-
-double FixReinforceInvert::wall_time()
-{
-  return MPI_Wtime();
 }
 
 void FixReinforceInvert::log(const std::string &line)
@@ -626,4 +431,178 @@ void FixReinforceInvert::warn(const std::string &message)
 void FixReinforceInvert::fail(const std::string &message)
 {
   error->all(FLERR, message.c_str());
+}
+
+// LIGGGHTS's atoms and communication behind reinforce::HostHooks (the MPI
+// hooks are reinforce::MpiHooks, shared with the LAMMPS adapter), for one
+// invocation. run_invocation() calls every collective hook on all
+// processes; move() and remove() only on the processes of the current round.
+class FixReinforceInvert::Host : public reinforce::MpiHooks {
+public:
+  explicit Host(FixReinforceInvert &fix) : MpiHooks(fix.world), f(fix) {}
+  // A raised ghost cutoff is put back on every way out of the invocation,
+  // also when an error unwinds through it (a host built to throw).
+  ~Host() override { restore_ghost_cutoff(); }
+  Host(const Host &) = delete;
+  Host &operator=(const Host &) = delete;
+
+  void refresh() override
+  {
+    f.domain->pbc();
+    f.domain->reset_box();
+    f.comm->setup();
+    f.comm->exchange();
+    f.atom->nghost = 0;
+    f.comm->borders();
+    forward_pending();
+  }
+
+  reinforce::AtomArrays atoms() override
+  {
+    Atom *atom = f.atom;
+    reinforce::AtomArrays a;
+    a.nlocal = atom->nlocal;
+    a.nall = atom->nlocal + atom->nghost;
+    a.x = atom->x;
+    a.radius = atom->radius;
+    a.tag.assign(atom->tag, atom->tag + a.nall);
+    a.mask = atom->mask;
+    a.pending = f.pending_;
+    a.group_bit = f.groupbit;
+    a.rebar_bit = f.rebar_bit_;
+    // The bars of the other reinforce/invert fixes stay as they are.
+    std::vector<std::string> others;
+    for (int k = 0; k < f.modify->nfix; ++k) {
+      Fix *other = f.modify->fix[k];
+      if (other == &f || std::strcmp(other->style, "reinforce/invert") != 0) continue;
+      a.frozen_bits |= static_cast<FixReinforceInvert *>(other)->rebar_bit_;
+      others.push_back(other->id);
+    }
+    for (std::size_t k = 0; k < others.size(); ++k)
+      a.frozen_by += (k == 0 ? (others.size() == 1 ? "fix " : "fixes ") : ", ") + others[k];
+    return a;
+  }
+
+  void set_pending(int local, bool pending) override { f.pending_[local] = pending ? 1 : 0; }
+
+  void forward_pending() override { f.comm->forward_comm_fix(&f); }
+
+  void ensure_ghost_cutoff(double reach) override
+  {
+    const double have = std::min({f.ghost_reach(0), f.ghost_reach(1), f.ghost_reach(2)});
+    if (have >= reach) return;
+    // A second raise (the regrowth) restores the user's value too.
+    if (user_cutghost < 0) user_cutghost = f.comm->cutghostuser;
+    f.comm->cutghostuser = f.granular_ghosts() ? 2 * reach : reach;
+    refresh();
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "fix reinforce/invert: ghost cutoff raised from %g to %g for the relocation\n",
+                  have, reach);
+    log(line);
+  }
+
+  void restore_ghost_cutoff() override
+  {
+    if (user_cutghost < 0) return;
+    f.comm->cutghostuser = user_cutghost;
+    user_cutghost = -1;
+    f.comm->setup();
+  }
+
+  reinforce::Domain placement_domain() override
+  {
+    Domain *domain = f.domain;
+    reinforce::Domain d;
+    for (int k = 0; k < 3; ++k) {
+      d.lo[k] = domain->boxlo[k];
+      d.hi[k] = domain->boxhi[k];
+      d.periodic[k] = domain->periodicity[k] != 0;
+      d.view_lo[k] = domain->sublo[k] - f.ghost_reach(k);
+      d.view_hi[k] = domain->subhi[k] + f.ghost_reach(k);
+      d.sub_lo[k] = domain->sublo[k];
+      d.sub_hi[k] = domain->subhi[k];
+    }
+    if (f.region_) {
+      // match_shrinkby_cut(x, cut) is match(x) and no contact with the
+      // region's surface closer than cut on the region's side: for side in
+      // the centre is inside and surface_interior finds no face within cut,
+      // for side out it is outside the shape and surface_exterior finds none
+      // (the distances fix wall/region uses). Either way the ball of radius
+      // cut lies wholly in the region. (region.h calls it "OR"; the code is
+      // AND.) A moving region was set for this step by prematch in invoke.
+      Region *region = f.region_;
+      d.region = [region](const reinforce::Vec3 &c, double r) {
+        double x[3] = {c.x, c.y, c.z};
+        return region->match_shrinkby_cut(x, r) != 0;
+      };
+    }
+    d.walls = f.walls_in_view();
+    return d;
+  }
+
+  void move(int i, reinforce::Vec3 x, double r) override
+  {
+    Atom *atom = f.atom;
+    const double scale = r / atom->radius[i];
+    for (int k = 0; k < 3; ++k) {
+      atom->x[i][k] = x[k];
+      atom->v[i][k] = 0;
+      if (atom->omega_flag) atom->omega[i][k] = 0;
+    }
+    atom->rmass[i] *= scale * scale * scale;    // same material density
+    atom->radius[i] = r;
+    f.pending_[i] = 0;
+    for (Anchors &a : f.anchors_)
+      if (atom->mask[i] & a.bit) a.moved.insert(atom->tag[i]);
+  }
+
+  // As delete_atoms does: the last owned atom moves into each hole
+  // (avec->copy also carries every fix's per-atom data). Highest index
+  // first, so a moved atom is never one still to be removed.
+  void remove(std::vector<int> &locals) override
+  {
+    std::sort(locals.rbegin(), locals.rend());
+    for (int i : locals) {
+      f.atom->avec->copy(f.atom->nlocal - 1, i, 1);
+      f.atom->nlocal--;
+    }
+  }
+
+  void log(const std::string &line) override { f.log(line); }
+  void warn(const std::string &message) override { f.warn(message); }
+  void fail(const std::string &message) override { f.fail(message); }
+
+private:
+  FixReinforceInvert &f;
+  double user_cutghost = -1;    // >= 0 while the ghost cutoff is raised
+};
+
+/* ---- the invocation ---- */
+
+void FixReinforceInvert::invoke()
+{
+  invoked_ = true;
+  // Atoms created since the last invocation (insert/pack, create_atoms)
+  // carry no flag yet: every flag starts clear.
+  std::fill(pending_, pending_ + nmax_, 0);
+  if (region_) region_->prematch();
+  check_multisphere_bodies();
+  read_walls();
+  find_anchors();
+  reinforce::Totals t;
+  {
+    Host host(*this);
+    t = reinforce::run_invocation(host, options_);
+  }
+  warn_anchors();
+  output_ = reinforce::output_vector(t);
+  // As delete_atoms does: the global count and the atom map.
+  bigint nlocal = atom->nlocal;
+  MPI_Allreduce(&nlocal, &atom->natoms, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (atom->map_style) {
+    atom->nghost = 0;
+    atom->map_init();
+    atom->map_set();
+  }
 }

@@ -14,7 +14,7 @@ FixStyle(reinforce/invert,FixReinforceInvert)
 #define REINFORCE_LIGGGHTS_FIX_REINFORCE_INVERT_H
 
 #include "fix.h"
-#include "invocation.h"
+#include "reinforce_invocation.h"
 
 #include <cstdint>
 #include <memory>
@@ -22,18 +22,14 @@ FixStyle(reinforce/invert,FixReinforceInvert)
 #include <unordered_set>
 #include <vector>
 
-namespace reinforce {
-class MpiExchange;
-}
-
 namespace LAMMPS_NS {
 
 class PrimitiveWall;
 // A primitive wall's type (PRIMITIVE_WALL_DEFINITIONS::WallType) and its
-// parameters, which LIGGGHTS keeps private (primitive_wall_access.cpp).
+// parameters, which LIGGGHTS keeps private (reinforce_primitive_wall_access.cpp).
 int primitive_wall_shape(const PrimitiveWall &wall, std::vector<double> &param);
 
-class FixReinforceInvert : public Fix, private reinforce::HostHooks {
+class FixReinforceInvert : public Fix {
 public:
   FixReinforceInvert(class LAMMPS *, int, char **);
   ~FixReinforceInvert();
@@ -59,8 +55,6 @@ private:
   int nmax_ = 0;              // length of pending_
   std::array<double, reinforce::kOutputSize> output_ = {};
   bool invoked_ = false;
-  double user_cutghost_ = -1;                           // >= 0 while the ghost cutoff is raised
-  std::unique_ptr<reinforce::MpiExchange> exchange_;    // the rounds' results, per invocation
   // The walls of the wall fixes, read at each invocation (read_walls), and
   // the engine's copy of them (with periodic images of the triangles).
   std::vector<reinforce::Plane> wall_planes_;
@@ -87,28 +81,14 @@ private:
   void find_anchors();
   void warn_anchors();
 
-  // reinforce::HostHooks
-  void refresh() override;
-  reinforce::AtomArrays atoms() override;
-  void set_pending(int local, bool pending) override;
-  void forward_pending() override;
-  void ensure_ghost_cutoff(double reach) override;
   double ghost_reach(int d);
   bool granular_ghosts();
-  void restore_ghost_cutoff() override;
-  reinforce::Domain placement_domain() override;
-  void move(int local, reinforce::Vec3 x, double r) override;
-  void remove(std::vector<int> &locals) override;
-  double sum(double v) override;
-  double max(double v) override;
-  std::vector<double> gather_all(const std::vector<double> &mine) override;
-  void post_results(const std::vector<double> &mine, const std::vector<int> &ranks) override;
-  std::vector<double> collect_results(const std::vector<int> &ranks) override;
-  void finish_results() override;
-  double wall_time() override;
-  void log(const std::string &line) override;
-  void warn(const std::string &message) override;
-  void fail(const std::string &message) override;
+  void log(const std::string &line);
+  void warn(const std::string &message);
+  void fail(const std::string &message);    // does not return
+
+  class Host;    // reinforce::HostHooks on LIGGGHTS's atoms and communication
+  friend class Host;
 };
 
 }    // namespace LAMMPS_NS

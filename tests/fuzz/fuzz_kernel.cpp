@@ -4,7 +4,7 @@
 // realistic range with tiny perturbations (degenerate geometry). Whatever
 // the input, every returned solution must be finite, have r > 0 and satisfy
 // the tangency equations to kAcceptResidual; anything else traps.
-#include "tangent_sphere.h"
+#include "reinforce_tangent_sphere.h"
 
 #include <cmath>
 #include <cstdint>

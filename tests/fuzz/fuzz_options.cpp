@@ -2,8 +2,8 @@
 // The input is split into words at spaces and NULs; parsing must either
 // give options that satisfy every documented invariant or throw
 // OptionError, never anything else.
-#include "fix_options.h"
-#include "regrowth.h"
+#include "reinforce_fix_options.h"
+#include "reinforce_regrowth.h"
 
 #include <cmath>
 #include <cstdint>

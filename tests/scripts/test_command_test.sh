@@ -89,7 +89,7 @@ cp -r "$top/CMakeLists.txt" "$top/scripts" "$top/bench" "$real/"
 cp -r "$top/src/core" "$real/src/"
 first=$(sed -n 's|^ *\(src/core/[a-z_]*\.cpp\)$|\1|p; s|^add_library(reinforce_core STATIC *\(src/core/[a-z_]*\.cpp\).*|\1|p' \
         "$real/CMakeLists.txt" | head -1)
-[ -n "$first" ] || first=src/core/tangent_sphere.cpp
+[ -n "$first" ] || first=src/core/reinforce_tangent_sphere.cpp
 sed -i '1i #error deliberately broken by tests/scripts/test_command_test.sh' "$real/$first"
 
 # expect NAME STATUS(0|nonzero) DIR BIN [VAR=value ...] -- PATTERN... [-- !PATTERN...]

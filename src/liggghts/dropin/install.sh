@@ -7,12 +7,12 @@
 #   cmake -S /path/to/LIGGGHTS-PUBLIC/src -B build && cmake --build build
 #   (or make auto / make mpi in src/)
 #
-# It copies the fix (with primitive_wall_access.cpp) and the engine
+# It copies the fix (with reinforce_primitive_wall_access.cpp) and the engine
 # (src/core, no host headers) into src/.
 # LIGGGHTS's own style generator finds the FixStyle block in
 # fix_reinforce_invert.h and registers the style like any other: no
 # liggghts_reinforce and no reaching into Modify on this path (the walls
-# still need primitive_wall_access.cpp). Safe to run again (it refreshes the
+# still need reinforce_primitive_wall_access.cpp). Safe to run again (it refreshes the
 # copies).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -20,13 +20,13 @@ top=$(cd "$here/../../.." && pwd)
 tree=${1:?usage: install.sh LIGGGHTS_TREE (the folder holding src/)}
 [ -f "$tree/src/lammps.h" ] && [ -f "$tree/src/fix_multisphere.h" ] ||
   { echo "install.sh: $tree is not the top of a LIGGGHTS-PUBLIC source tree (src/lammps.h, src/fix_multisphere.h)"; exit 1; }
-for f in "$top"/src/core/*.h "$top"/src/core/*.cpp "$top/src/liggghts/primitive_wall_access.cpp"; do
+for f in "$top"/src/core/*.h "$top"/src/core/*.cpp "$top/src/liggghts/reinforce_primitive_wall_access.cpp"; do
   b=$(basename "$f")
   if [ -e "$tree/src/$b" ] && ! grep -q 'reinforce' "$tree/src/$b"; then
     echo "install.sh: $tree/src/$b exists and is not ours: not overwriting it"; exit 1
   fi
 done
 cp "$top/src/liggghts/fix_reinforce_invert.h" "$top/src/liggghts/fix_reinforce_invert.cpp" \
-   "$top/src/liggghts/primitive_wall_access.cpp" "$tree/src/"
+   "$top/src/liggghts/reinforce_primitive_wall_access.cpp" "$tree/src/"
 cp "$top"/src/core/*.h "$top"/src/core/*.cpp "$tree/src/"
 echo "install.sh: fix reinforce/invert copied into $tree/src (configure afresh to register it)"

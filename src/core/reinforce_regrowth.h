@@ -1,0 +1,53 @@
+// Regrowth: room made for the targets the voids could not take, by growing
+// the matrix near them back around the bars (docs/design.md, "Regrowth").
+// The targets of a block left without a place (the seeds) start where they
+// were, shrunk, and the matrix spheres within `width` of them shrunk less
+// the farther they are; all grow back to their own radii while overlaps are
+// projected out, the bars and everything beyond the zone frozen. A seed
+// that still cannot fit is deleted (the most overlapped first), so the zone
+// keeps as many spheres as it holds without compression.
+#pragma once
+
+#include "reinforce_relocation.h"
+#include "reinforce_round_records.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace reinforce {
+
+struct RegrowthStats {
+  std::int64_t seeds = 0;             // targets the regrowth took up
+  std::int64_t regrown = 0;           // of them, put back at their own radius
+  std::int64_t displaced = 0;         // of them, deleted first: centre inside a bar sphere
+  std::int64_t deleted = 0;           // of them, deleted (displaced included)
+  std::int64_t deleted_matrix = 0;    // matrix spheres deleted to clear the zone
+  std::int64_t moved = 0;             // matrix spheres moved
+  std::int64_t sweeps = 0;            // projection sweeps over a block's zone
+  double volume_regrown = 0;          // volume of the regrown seeds
+  double volume_deleted_matrix = 0;
+  double max_overlap = 0;    // largest overlap of a regrown or moved sphere, / rmin
+  double max_move = 0;       // largest displacement of a matrix sphere, / rmin
+};
+
+// How far the regrowth of one seed reaches from its centre: it moves
+// spheres whose centres lie within `write` (before and after) and reads
+// those within `read`, given the largest radius of a movable sphere
+// (matrix_rmax) and of any sphere (largest_r).
+struct RegrowthReach {
+  double write = 0, read = 0;
+};
+RegrowthReach regrowth_reach(double width, double matrix_rmax, double largest_r);
+
+// Regrows the zone of the seeds `seeds` (indices of Target particles of
+// `reads`; `reads` holds every particle within regrowth_reach().read of
+// them, and what else it holds is frozen). Other Target particles are vacant. Returns a Placed
+// record for each seed kept, a Deleted one for each seed deleted, and a Pushed one (the
+// displacement) for each matrix sphere moved. The result depends only on the particles within reach
+// of the seeds, not on their order.
+std::vector<RoundRecord> regrow(const std::vector<Particle> &reads,
+                                const std::vector<std::size_t> &seeds, double width,
+                                const Settings &settings, const Domain &domain,
+                                RegrowthStats &stats);
+
+}    // namespace reinforce
