@@ -366,7 +366,8 @@ if refs:
     # The fix's profile beside each reference's (the fix's own bins are the
     # same against either: same sample points).
     for sc in dict.fromkeys(p["scene"] for p in profiles):
-        ps = [p for p in profiles if p["scene"] == sc and float(p["hi_rmax"]) <= 4 + 1e-9]
+        ps = [p for p in profiles if p["scene"] == sc and float(p["hi_rmax"]) <= 4 + 1e-9
+              and p["method"] == "fix defaults" and p["reference"] != "-"]
         names = list(dict.fromkeys(p["reference"] for p in ps))
         if not ps:
             continue
@@ -404,6 +405,47 @@ if refs:
             "processes; each shell ratio is against its own bulk.")
 else:
     md.append("Not run (part `reference` left out).")
+
+# --- profiles ------------------------------------------------------------------
+# One plot per scene: each profiled method's solid fraction against distance
+# from the bars, beside each reference's (the references' bins come with the
+# fix's defaults rows: same sample points for every method).
+md.append("\n## Profiles\n")
+if profiles:
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import profile_plot
+
+    md.append("Matrix solid fraction (± its standard error) against distance from the nearest rebar surface, "
+              "in bins of rmin, out to 6 rmax, for each scene: the fix's defaults, the seed paper's `size fit`, "
+              "`regrow yes`, `delete_atoms overlap` with cutoff r_bar + rmax, and the packing grown around "
+              "the bars where this run has one (`scene_quality`; the same rows as the tables above). A "
+              "packing grown around the bars has a dense first layer against them; a hollow there is the "
+              "room the targets took with them.\n")
+
+    def rows_of(ps):
+        return [(float(p["lo_rmax"]), float(p["hi_rmax"]), float(p["phi"]), float(p["phi_se"])) for p in ps]
+
+    for sc in dict.fromkeys(p["scene"] for p in profiles):
+        mine = [p for p in profiles if p["scene"] == sc]
+        series = []
+        for method in dict.fromkeys(p["method"] for p in mine):
+            ps = [p for p in mine if p["method"] == method]
+            param = max((p["param"] for p in ps), key=lambda v: num(v) or 0)
+            first_ref = ps[0]["reference"]
+            chosen = [p for p in ps if p["param"] == param and p["reference"] == first_ref]
+            label = method if method != "delete_atoms overlap" else f"delete_atoms overlap {param}"
+            series.append((label, rows_of(chosen)))
+        for ref in dict.fromkeys(p["reference"] for p in mine if p["reference"] != "-"):
+            ps = [p for p in mine if p["reference"] == ref and p["method"] == "fix defaults" and p["ref_phi"]]
+            if ps:
+                series.append((f"{ref} (grown around the bars)",
+                               [(float(p["lo_rmax"]), float(p["hi_rmax"]), float(p["ref_phi"]),
+                                 float(p["ref_phi_se"])) for p in ps]))
+        name = f"profile_{sc}.svg"
+        profile_plot.plot(os.path.join(img_dir, name), f"{sc}: solid fraction near the bars", series)
+        md.append(f"![profile of {sc}](img/{name})\n")
+else:
+    md.append("Not run.")
 
 # --- parallel speedup -----------------------------------------------------------
 md.append("\n## Parallel speedup\n")

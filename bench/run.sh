@@ -3,9 +3,9 @@
 # scenes in one run, and writes docs/benchmarks.md (bench/report.py): every
 # sentence and number of that page comes from this run.
 #
-#   bash bench/run.sh            full run (about 15 minutes on 2 cores, plus
-#                                about 4 the first time: the make_packing.lmp
-#                                reference, then cached in bench/out/scenes)
+#   bash bench/run.sh            full run (about 30 minutes on 2 cores, plus
+#                                about 15 the first time: the make_packing.lmp
+#                                references, then cached in bench/out/scenes)
 #   bash bench/run.sh --quick    one small scene, one repeat, every method and
 #                                table; the page goes to a scratch folder
 #                                (run by the test suite so the harness cannot rot)
@@ -17,7 +17,8 @@
 #   fix       reinforce/invert: defaults (size keep, choose closest, tries
 #             1000, no pushing), size fit (the seed paper's mode), choose
 #             first, tries 15 (paper-era budget), push rmax (size keep with
-#             pushing); time = the fix's own f_ID[9]
+#             pushing), regrow yes (the regrowth where no void holds a
+#             target); time = the fix's own f_ID[9]
 #   delete    delete_atoms overlap with cutoff r_bar + rmax (removes every
 #             target and more) and r_bar + rmin (misses some); time = wall
 #             clock around the command (shell date in the input)
@@ -26,9 +27,9 @@
 #   grow      the reference a user would otherwise make: the same packing law
 #             grown around the bars from the start (build/tests/grow_packing
 #             --around-bars), its wall time and its own scene quality; for
-#             the 0.60 beam also the beam's own law, the LAMMPS growth that
-#             made its packings (examples/beam/make_packing.lmp -var bars,
-#             several minutes the first time, then cached)
+#             the beams also the beam's own law, the LAMMPS growth that
+#             made their packings (examples/beam/make_packing.lmp -var bars,
+#             minutes each the first time, then cached)
 # plus the whole process time and peak memory (/usr/bin/time), scene
 # quality (build/tests/scene_quality, before and after dumps, against the
 # grown reference where there is one), a narrow-size scene (radii 4-5 mm),
@@ -158,24 +159,37 @@ run_delete() {
 # one (a row of versus.tsv). For the fix's defaults the profiles beside each
 # reference go to profile.tsv.
 declare -A refs_of=() lammps_refs_of=()
+# The methods whose profiles (solid fraction against distance from the bars)
+# go to profile.tsv, for the report's plots.
+profiled="|fix defaults|fix size fit (seed paper)|fix regrow yes|delete_atoms overlap|"
 quality_value() {    # quality_value LINE KEY: a value from a QUALITY line
   tr ' ' '\n' <<<"$1" | awk -F= -v k="$2" '$1 == k {print $2}'
 }
-profile_rows() {    # profile_rows NAME REFERENCE METHOD PARAM < scene_quality output
-  sed -n 's/^ *\[ *\([0-9.e+-]*\), *\([0-9.e+-]*\)) rmax *\([0-9.]*\) +- \([0-9.]*\) .* ref \([0-9.]*\) +- \([0-9.]*\) .*/\1\t\2\t\3\t\4\t\5\t\6/p' |
-    awk -v p="$1"$'\t'"$2"$'\t'"$3"$'\t'"$4" '{print p "\t" $0}' >> "$profiles"
+profile_rows() {    # profile_rows NAME REFERENCE METHOD PARAM < scene_quality output (REFERENCE "-": none)
+  awk -v p="$1"$'\t'"$2"$'\t'"$3"$'\t'"$4" '
+    /^ *\[ *[0-9.e+-]+, *[0-9.e+-]+\) rmax / {
+      line = $0; gsub(/[\[\),]/, " ", line); n = split(line, f, " ")
+      ref = ""; for (i = 1; i <= n; i++) if (f[i] == "ref") ref = f[i + 1] "\t" f[i + 3]
+      if (ref == "") ref = "\t"
+      print p "\t" f[1] "\t" f[2] "\t" f[4] "\t" f[6] "\t" ref
+    }' >> "$profiles"
 }
 quality_of() {
   local name=$1 scene=$2 method=$3 param=$4 rmin=$5 rmax=$6 after=${7:-$last_run/after.dump} line out2
   local quiet=(--quiet-profile)
-  [ "$method" = "fix defaults" ] && quiet=()
+  [[ "$profiled" == *"|$method|"* ]] && quiet=()
   local args=(--after "$after" --rmin "$rmin" --rmax "$rmax" "${quiet[@]}")
   [ "$scene" != - ] && args+=(--before "$(before_dump "$scene")")
   [ -n "${refs_of[$name]:-}" ] && args+=(--reference "${refs_of[$name]}")
   out2=$("$quality" "${args[@]}" ${QUALITY_ARGS:-}) || { echo "bench: scene_quality failed" >&2; exit 1; }
   line=$(grep '^QUALITY' <<<"$out2") || { echo "bench: scene_quality failed" >&2; exit 1; }
-  [ -n "${refs_of[$name]:-}" ] && [ "$method" = "fix defaults" ] &&
-    profile_rows "$name" grow_packing "$method" "$param" <<<"$out2"
+  if [ -z "${quiet[*]}" ]; then
+    if [ -n "${refs_of[$name]:-}" ]; then
+      profile_rows "$name" grow_packing "$method" "$param" <<<"$out2"
+    else
+      profile_rows "$name" - "$method" "$param" <<<"$out2"
+    fi
+  fi
   local q=()
   for k in shell_ratio shell_ratio_se removed_ratio ks targets deleted moved_nontargets bulk ref_bulk \
            ref_shell_ratio shell_vs_reference bin_diff_max; do
@@ -187,7 +201,7 @@ quality_of() {
     out2=$("$quality" --after "$after" --rmin "$rmin" --rmax "$rmax" --reference "${lammps_refs_of[$name]}" \
       "${quiet[@]}") || { echo "bench: scene_quality failed against ${lammps_refs_of[$name]}" >&2; exit 1; }
     line=$(grep '^QUALITY' <<<"$out2") || { echo "bench: scene_quality failed" >&2; exit 1; }
-    [ "$method" = "fix defaults" ] && profile_rows "$name" make_packing.lmp "$method" "$param" <<<"$out2"
+    [ -z "${quiet[*]}" ] && profile_rows "$name" make_packing.lmp "$method" "$param" <<<"$out2"
     q=()
     for k in shell_ratio shell_ratio_se ref_shell_ratio shell_vs_reference bin_diff_max bulk ref_bulk; do
       q+=("$(quality_value "$line" "$k")")
@@ -289,6 +303,9 @@ bench_scene() {
     rm -f "$last_run/after.dump"
     run_fix "$name" "$data" "fix push rmax" 1000 1 "$rep" -var opts "push $rmax"
     [ "$rep" = 1 ] && quality_of "$name" "$data" "fix push rmax" 1000 "$rmin" "$rmax"
+    rm -f "$last_run/after.dump"
+    run_fix "$name" "$data" "fix regrow yes" 1000 1 "$rep" -var opts "regrow yes"
+    [ "$rep" = 1 ] && quality_of "$name" "$data" "fix regrow yes" 1000 "$rmin" "$rmax"
     rm -f "$last_run/after.dump"
     for cut in "$(awk -v a="$rbar" -v b="$rmax" 'BEGIN {print a + b}')" \
                "$(awk -v a="$rbar" -v b="$rmin" 'BEGIN {print a + b}')"; do
@@ -449,7 +466,7 @@ if [ "$quick" = 1 ]; then
   echo "bench --quick: $rows result rows, $(($(wc -l < "$qual") - 1)) quality rows, $(($(wc -l < "$curves") - 1)) relaxation points in $out"
   lig=0
   [ -x "$liggghts" ] && lig=1
-  [ "$rows" -eq $((7 + 1 + 2 + 4 + 4 + 7 + lig)) ] && [ "$(wc -l < "$qual")" -eq $((15 + lig)) ] &&
+  [ "$rows" -eq $((8 + 1 + 2 + 4 + 4 + 8 + lig)) ] && [ "$(wc -l < "$qual")" -eq $((17 + lig)) ] &&
     [ "$(wc -l < "$curves")" -eq 4 ] && [ "$(wc -l < "$refs")" -eq 3 ] ||
     { echo "bench --quick: missing rows"; exit 1; }
   awk -F'\t' 'NR > 1 && $1 == "narrow" && $13 == "" {bad = 1} END {exit bad}' "$qual" \
@@ -458,13 +475,20 @@ if [ "$quick" = 1 ]; then
     || { echo "bench --quick: fix row incomplete"; exit 1; }
   grep -q "^## Parallel speedup" "$docs/benchmarks.md" && grep -q "^## Scene quality" "$docs/benchmarks.md" &&
     grep -q "^## Cost against rebar radius and search gap" "$docs/benchmarks.md" &&
-    grep -q "^## Against a packing grown around the bars" "$docs/benchmarks.md" ||
+    grep -q "^## Against a packing grown around the bars" "$docs/benchmarks.md" &&
+    grep -q "^## Profiles" "$docs/benchmarks.md" ||
     { echo "bench --quick: report section missing"; exit 1; }
+  for sc in small narrow; do
+    grep -q '<polyline points="[0-9]' "$docs/img/profile_$sc.svg" ||
+      { echo "bench --quick: no profile plot of $sc"; exit 1; }
+  done
+  [ "$(grep -c '<polyline' "$docs/img/profile_narrow.svg")" -eq 5 ] ||
+    { echo "bench --quick: the narrow profile plot lacks a method or its reference"; exit 1; }
   [ -z "${REINFORCE_BENCH_OUT:-}" ] && rm -rf "$out"
   exit 0
 fi
 
-meta scenes "beam050 beam060 beam064 narrow slab liggghts"
+meta scenes "beam050 beam060 beam064 narrow one fibres slab liggghts"
 for phi in 050 060 064; do
   scene="$out/scenes/beam$phi.data"
   [ -f "$scene" ] || mpirun -np 1 "$lmp" -in "$inputs/in.prepare" -var matrix "$beam/matrix_phi$phi.data.gz" \
@@ -475,9 +499,13 @@ done
 # beam060 has two: grow_packing's (our fast grower, a geometric protocol)
 # and make_packing.lmp's (the law that made the beam's packings, by LAMMPS).
 if part reference; then
+  grow_scene beam050 around "$out/scenes/beam050_ref.data" 12 0.0025 0.0075 0.50 "${beam_bars[@]}"
   grow_scene beam060 around "$out/scenes/beam060_ref.data" 12 0.0025 0.0075 0.60 "${beam_bars[@]}"
   grow_scene narrow around "$out/scenes/narrow_ref.data" 12 0.004 0.005 0.60 "${beam_bars[@]}"
-  lammps_ref beam060 "$out/scenes/beam060_lammps_ref.data" 0.60 48271 "$beam/bars.data" 0.0025 0.0075
+  for phi in 050 060 064; do
+    lammps_ref "beam$phi" "$out/scenes/beam${phi}_lammps_ref.data" "0.${phi#0}" 48271 "$beam/bars.data" \
+      0.0025 0.0075
+  done
 fi
 part compare && for phi in 050 060 064; do
   bench_scene "beam$phi" "$out/scenes/beam$phi.data" 0.0025 0.0075 0.005 3
@@ -487,6 +515,20 @@ done
 if part narrow; then
   grow_scene narrow alone "$out/scenes/narrow.data" 11 0.004 0.005 0.60 "${beam_bars[@]}"
   bench_scene narrow "$out/scenes/narrow.data" 0.004 0.005 0.005 2
+fi
+# The one-radius and thin-fibre scenes of the quality tests (box 0.18 x
+# 0.14 x 0.14 m, walls; defined once, tests/quality/make_scenes.sh): one
+# radius 4 mm at 0.56 with three bars, and radii 2.5-7.5 mm at 0.58 with
+# 200 fibres of 1 mm spheres. Around the fibres grow_packing jams: that
+# scene has no reference.
+if part more; then
+  mapfile -t one_args < <(bash "$top/tests/quality/make_scenes.sh" --args one)
+  mapfile -t fibre_args < <(bash "$top/tests/quality/make_scenes.sh" --args fibres)
+  grow_scene one around "$out/scenes/one_ref.data" 12 0.004 0.004 0.56 "${one_args[@]}"
+  grow_scene one alone "$out/scenes/one.data" 11 0.004 0.004 0.56 "${one_args[@]}"
+  bench_scene one "$out/scenes/one.data" 0.004 0.004 0.005 2
+  grow_scene fibres alone "$out/scenes/fibres.data" 11 0.0025 0.0075 0.58 "${fibre_args[@]}"
+  bench_scene fibres "$out/scenes/fibres.data" 0.0025 0.0075 0.001 2
 fi
 part liggghts && liggghts_part 2
 if part speedup; then

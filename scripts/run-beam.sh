@@ -2,7 +2,8 @@
 # The README's main command: installs what is missing, builds, and runs the
 # seed paper's reinforced beam (examples/beam) at the three densities, with
 # lmp_reinforce under mpirun (REINFORCE_BEAM_NP processes, default 2).
-# Writes examples/beam/out/: a picture, a dump and a data file per density,
+# Writes examples/beam/out/: a picture, a dump, a data file and a profile
+# plot (solid fraction against distance from the bars) per density,
 # and table.md.
 set -euo pipefail
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -37,6 +38,7 @@ echo "scene quality: size fit and delete_atoms overlap on the same beams"
   echo "| solid fraction | method | deleted | shell ratio | removed ratio | KS of radii |"
   echo "|---|---|---|---|---|---|"
   for phi in ${REINFORCE_BEAM_PHIS:-050 060 064}; do
+    rm -f "out/profile_phi$phi.tsv"
     for method in fix fit delete; do
       dir=out
       if [ "$method" != fix ]; then
@@ -47,8 +49,8 @@ echo "scene quality: size fit and delete_atoms overlap on the same beams"
         mpirun -np "$np" "$lmp" -in in.beam -var phi "$phi" -var out "$dir" "${vars[@]}" \
           -log "$dir/log_phi$phi.lammps" -screen none
       fi
-      line=$("$quality" --before "out/before_phi$phi.dump" --after "$dir/beam_phi$phi.dump" \
-        --quiet-profile | grep '^QUALITY')
+      report=$("$quality" --before "out/before_phi$phi.dump" --after "$dir/beam_phi$phi.dump")
+      line=$(grep '^QUALITY' <<<"$report")
       get() { tr ' ' '\n' <<<"$line" | awk -F= -v k="$1" '$1 == k {print $2}'; }
       case $method in
         fix) name="fix defaults" ;;
@@ -56,9 +58,19 @@ echo "scene quality: size fit and delete_atoms overlap on the same beams"
         delete) name="delete_atoms overlap 0.0125" ;;
       esac
       echo "| 0.${phi#0} | $name | $(get deleted) | $(get shell_ratio) ± $(get shell_ratio_se) | $(get removed_ratio) | $(get ks) |"
+      # The profile (solid fraction by distance from the bars) for the plot.
+      awk -v m="$name" '/^ *\[ *[0-9.e+-]+, *[0-9.e+-]+\) rmax / {
+          l = $0; gsub(/[\[\),]/, " ", l); split(l, f, " ")
+          print m "\t" f[1] "\t" f[2] "\t" f[4] "\t" f[6] }' <<<"$report" >> "out/profile_phi$phi.tsv"
     done
   done
 } > out/quality.md
 cat out/quality.md
 echo
+# One plot per density: solid fraction against distance from the bars.
+for phi in ${REINFORCE_BEAM_PHIS:-050 060 064}; do
+  python3 "$top/bench/profile_plot.py" "out/profile_phi$phi.svg" \
+    "beam, solid fraction 0.${phi#0}: matrix solid fraction near the bars" < "out/profile_phi$phi.tsv"
+done
+echo "profiles: $(ls "$top"/examples/beam/out/profile_phi*.svg | tr '\n' ' ')"
 echo "pictures: $(ls "$top"/examples/beam/out/*.png | tr '\n' ' ')"

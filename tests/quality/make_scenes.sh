@@ -5,7 +5,15 @@
 #   before.data   the matrix grown alone, then the bars added (the fix's input)
 #   ref.data      the same law grown around the same bars (the reference)
 #   boundary      "f f f" or "p p p"
+#   make_scenes.sh --args CASE    prints the case's grow_packing arguments
+#                                 (box, law, bars), one a line: the benchmark
+#                                 grows the same scenes (bench/run.sh)
 set -euo pipefail
+print_args=""
+if [ "${1:-}" = --args ]; then
+  print_args=${2:?usage: make_scenes.sh --args CASE}
+  set -- "" "" "$print_args"
+fi
 grow=$1 out=$2
 shift 2
 cases=("$@")
@@ -35,7 +43,6 @@ mapfile -t fibre_bars < <(awk 'BEGIN {
   }
 }')
 for c in "${cases[@]}"; do
-  mkdir -p "$out/$c"
   case $c in
     wide)   args=(--radius 0.0025 0.0075 --phi 0.58 --boundary f f f "${walls_bars[@]}"); bnd="f f f" ;;
     narrow) args=(--radius 0.004 0.005 --phi 0.58 --boundary f f f "${walls_bars[@]}"); bnd="f f f" ;;
@@ -44,6 +51,8 @@ for c in "${cases[@]}"; do
     fibres) args=(--radius 0.0025 0.0075 --phi 0.58 --boundary f f f "${fibre_bars[@]}"); bnd="f f f" ;;
     *) echo "make_scenes.sh: unknown case $c"; exit 2 ;;
   esac
+  if [ -n "$print_args" ]; then printf '%s\n' "${box[@]}" "${args[@]}"; exit 0; fi
+  mkdir -p "$out/$c"
   "$grow" "$out/$c/before.data" "${box[@]}" "${args[@]}" --seed 11
   # Around 200 thin fibres grow_packing jams (overlaps of 1.6 rmin after
   # 5 minutes): the fibre scene has no reference.
