@@ -248,11 +248,20 @@ TEST(FixOptions, WallsErrorsNameTheProblem)
   EXPECT_THROW(parse_fix_arguments({"0", "bars", "walls", "maybe"}), OptionError);
 }
 
-// regrow: off by default; yes gives 3 matrix radii, a length sets the
-// zone's width (capped by the box); no turns it off again.
+// regrow: on by default with size keep (3 matrix radii), not with size fit
+// or unplaced keep unless asked (an error with unplaced keep); yes gives
+// the same, a length sets the zone's width (capped by the box); no turns
+// it off.
 TEST(FixOptions, RegrowWidthOrNo)
 {
-  EXPECT_EQ(make_settings(parse_fix_arguments({"0", "bars"}), 0.1, 0.3, 100).regrow, 0);
+  EXPECT_DOUBLE_EQ(make_settings(parse_fix_arguments({"0", "bars"}), 0.1, 0.3, 100).regrow, 0.9);
+  EXPECT_EQ(
+      make_settings(parse_fix_arguments({"0", "bars", "unplaced", "keep"}), 0.1, 0.3, 100).regrow,
+      0);
+  EXPECT_EQ(make_settings(parse_fix_arguments({"0", "bars", "regrow", "no"}), 0.1, 0.3, 100).regrow,
+            0);
+  EXPECT_EQ(make_settings(parse_fix_arguments({"0", "bars", "size", "fit"}), 0.1, 0.3, 100).regrow,
+            0);    // the seed paper's mode, unless asked
   EXPECT_DOUBLE_EQ(
       make_settings(parse_fix_arguments({"0", "bars", "regrow", "yes"}), 0.1, 0.3, 100).regrow,
       0.9);

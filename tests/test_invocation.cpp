@@ -344,8 +344,8 @@ TEST(Invocation, ManyDeletedSaysWhy)
   MemoryHost h;
   fill(h, 8);
   // A radius no void of this scene reaches: no target finds a place.
-  const Totals t =
-      run_invocation(h, parse_fix_arguments({"0", "bars", "size", "fit", "radius", "0.3", "0.3"}));
+  const Totals t = run_invocation(
+      h, parse_fix_arguments({"0", "bars", "size", "fit", "radius", "0.3", "0.3", "regrow", "no"}));
   ASSERT_GT(t.stats.targets, 0);
   ASSERT_EQ(t.deleted, t.stats.targets);
   char expected[300];
@@ -535,7 +535,7 @@ TEST(Invocation, LoneTargetSaysItHadNoNeighbours)
   MemoryHost h;
   for (double x = 0.2; x < 0.8; x += 0.05) h.add({x, 0.5, 0.5}, 0.03, kGroup | kRebar);
   h.add({0.5, 0.53, 0.5}, 0.02, kGroup);
-  const Totals t = run_invocation(h, parse_fix_arguments({"0", "bars"}));
+  const Totals t = run_invocation(h, parse_fix_arguments({"0", "bars", "regrow", "no"}));
   ASSERT_EQ(t.stats.targets, 1);
   EXPECT_EQ(t.deleted, 1);
   EXPECT_EQ(t.stats.isolated, 1);
@@ -552,7 +552,7 @@ TEST(Invocation, BarLargerThanTheBoxIsNamed)
   h.add({0.5, 0.5, 0.5}, 0.7, kGroup | kRebar);
   for (double x = 0.1; x < 0.95; x += 0.2)
     for (double y = 0.1; y < 0.95; y += 0.2) h.add({x, y, 0.5}, 0.05, kGroup);
-  const Totals t = run_invocation(h, parse_fix_arguments({"0", "bars"}));
+  const Totals t = run_invocation(h, parse_fix_arguments({"0", "bars", "regrow", "no"}));
   ASSERT_GT(t.deleted, 0);
   ASSERT_FALSE(h.logged.empty());
   EXPECT_NE(h.logged.back().find("were deleted: a bar sphere (radius 0.7) is larger than the box"),

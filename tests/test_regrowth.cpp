@@ -97,8 +97,8 @@ TEST(Regrowth, SeedWithRoomIsPutBackAtItsRadius)
   ASSERT_EQ(rec.size(), 1u);
   EXPECT_EQ(rec[0].kind, RecordKind::Placed);
   EXPECT_EQ(rec[0].r, 0.1);
-  EXPECT_GE(norm(rec[0].v), 0.2 - 1e-7);                 // clear of the bar
-  EXPECT_LE(norm(rec[0].v - Vec3{0.15, 0, 0}), 0.15);    // near where it was (half the width)
+  EXPECT_GE(norm(rec[0].v), 0.2 - 1e-7);                                     // clear of the bar
+  EXPECT_LE(norm(rec[0].v - Vec3{0.15, 0, 0}), kRegrowthMoveShare * 0.3);    // its cap
   EXPECT_LE(largest_overlap_after(reads, rec), 1e-6);
   EXPECT_EQ(stats.regrown, 1);
   EXPECT_EQ(stats.deleted, 0);
@@ -116,24 +116,30 @@ TEST(Regrowth, ZoneMovesAndStaysClear)
   EXPECT_EQ(rec[1].kind, RecordKind::Pushed);
   EXPECT_EQ(rec[1].id, 3);
   EXPECT_GT(norm(rec[1].v), 0);
-  EXPECT_LE(norm(rec[1].v), 0.5 * 0.3 * (1 - 0.21 / 0.3) + 1e-12);    // its cap
+  EXPECT_LE(norm(rec[1].v), kRegrowthMoveShare * 0.3 * (1 - 0.21 / 0.3) + 1e-12);    // its cap
   EXPECT_LE(largest_overlap_after(reads, rec), 1e-6);
   EXPECT_EQ(stats.moved, 1);
   EXPECT_GT(stats.max_move, 0);
 }
 
-// Enclosed by spheres that may not move (outside the fix group), a seed
-// cannot fit: it is deleted and nothing else changes.
+// Enclosed by spheres that may not move (outside the fix group: on the
+// cubic lattice of the seed's diameter around it, wherever the bar leaves
+// room), a seed cannot fit within its cap: it is deleted and nothing else
+// changes.
 TEST(Regrowth, SeedWithoutRoomIsDeletedAndTheZoneLeftAsItWas)
 {
   std::vector<Particle> reads = bar_and_target();
   std::int64_t id = 10;
-  for (Vec3 d :
-       {Vec3{0.2, 0, 0}, Vec3{0, 0.2, 0}, Vec3{0, -0.2, 0}, Vec3{0, 0, 0.2}, Vec3{0, 0, -0.2}}) {
-    Particle p = sphere(Vec3{0.15, 0, 0} + d, 0.1, id++, Role::Matrix);
-    p.pushable = false;    // outside the fix group: obstacles only
-    reads.push_back(p);
-  }
+  for (int i = -1; i <= 1; ++i)
+    for (int j = -1; j <= 1; ++j)
+      for (int k = -1; k <= 1; ++k) {
+        const Vec3 c = Vec3{0.15, 0, 0} + 0.2 * Vec3{double(i), double(j), double(k)};
+        if ((i == 0 && j == 0 && k == 0) || norm(c) < 0.2) continue;    // the seed; the bar
+        Particle p = sphere(c, 0.1, id++, Role::Matrix);
+        p.pushable = false;    // outside the fix group: obstacles only
+        reads.push_back(p);
+      }
+  ASSERT_GE(reads.size(), 20u);
   RegrowthStats stats;
   const std::vector<RoundRecord> rec = regrow_target(reads, open_box(), stats);
   ASSERT_EQ(rec.size(), 1u);

@@ -129,6 +129,7 @@ const Keyword kKeywords[] = {
     {"regrow", 1,
      [](FixOptions &o, const std::string *v) {
        o.regrow_set = v[0] != "no";
+       o.regrow_off = v[0] == "no";
        o.regrow = 0;    // yes: the default width
        if (v[0] == "no" || v[0] == "yes") return;
        o.regrow = parse_double(v[0], "regrow");
@@ -195,12 +196,13 @@ Settings make_settings(const FixOptions &o, double matrix_rmin, double matrix_rm
   // measured, deleting the spheres mostly inside the bars leaves the shell
   // hollower than putting them in the voids near it (docs/design.md).
   s.displaced = o.keep_unplaced ? 2 : (o.displaced_set ? o.displaced : 2);
-  // The regrowth, when asked for (not with unplaced keep, which leaves
-  // such targets where they are): its zone reaches 3 radii, the second
-  // shell of neighbours of a seed. Off by default: on the quality scenes
-  // it has not yet put back more than a few targets (docs/design.md,
-  // "Regrowth").
-  s.regrow = o.regrow_set ? std::min(o.regrow > 0 ? o.regrow : 3 * matrix_rmax, bound) : 0;
+  // The regrowth: by default with size keep (the seed paper's size fit
+  // stays as it was unless asked), never with unplaced keep (which leaves
+  // such targets where they are); its zone reaches 3 radii, the second
+  // shell of neighbours of a seed (docs/design.md, "Regrowth").
+  const bool regrow =
+      !o.regrow_off && !o.keep_unplaced && (o.regrow_set || o.size == SizeMode::Keep);
+  s.regrow = regrow ? std::min(o.regrow > 0 ? o.regrow : 3 * matrix_rmax, bound) : 0;
   return s;
 }
 

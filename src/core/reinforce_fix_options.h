@@ -39,10 +39,11 @@ struct FixOptions {
   // walls ignore: the host's wall fixes are not read, and a wall the host
   // cannot describe does not stop the run (the user takes the risk).
   bool walls_ignore = false;
-  // regrow no (the default): none; regrow yes or W: on (an error with
-  // unplaced keep), W the zone's width (else 3 * the matrix's largest
-  // radius).
+  // regrow yes (the default with size keep, not with unplaced keep) or W:
+  // on, W the zone's width (else 3 * the matrix's largest radius); set
+  // explicitly, an error with unplaced keep. regrow no: off.
   bool regrow_set = false;
+  bool regrow_off = false;
   double regrow = 0;
 };
 

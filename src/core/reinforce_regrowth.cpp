@@ -1,29 +1,36 @@
 #include "reinforce_regrowth.h"
 
-#include "reinforce_cell_grid.h"
+#include "reinforce_regrowth_zone.h"
+#include "reinforce_soft_relaxation.h"
 
 #include <algorithm>
 #include <cmath>
-#include <tuple>
-#include <unordered_map>
 
 namespace reinforce {
 
 namespace {
 
-// A seed starts at this share of its radius, where it was, and grows to
-// its own in kGrowthSteps equal steps, each followed by at most
-// kSweepsPerStep sweeps of its zone (fewer once the largest overlap is
-// below kSettled of a radius: the next step makes new ones anyway); then
-// at most kFinalSweeps, until no overlap exceeds tol.
+// A seed starts at this share of its radius and grows to its own in
+// kGrowthSteps equal steps, each followed by at most kStepIters FIRE steps
+// of the whole zone (fewer once no overlap exceeds kSettled of a radius);
+// a growth whose overlaps stay above kAbort of a radius after a step is
+// given up. Then at most kRelaxIters FIRE steps, until no overlap exceeds
+// kUnjam of tol (the zone unjams), else, when the overlaps are below
+// kNearlyClear, at most kFinalSweeps projection sweeps to tol.
 constexpr double kStartScale = 0.5;
 constexpr int kGrowthSteps = 10;
-constexpr int kSweepsPerStep = 8;
-constexpr double kSettled = 1e-3;
+constexpr int kStepIters = 100;
+constexpr double kSettled = 1e-4;
+constexpr double kAbort = 0.05;
+constexpr int kRelaxIters = 2000;
+constexpr double kUnjam = 0.2;
+constexpr double kNearlyClear = 2e-5;
 constexpr int kFinalSweeps = 200;
-// A seed tries at most kStarts places to grow from: the least overlapped
-// points near where it was.
+// A seed tries at most kStarts places: the least overlapped points near
+// where it was. It fits alone at any of them, or grows from the first
+// kGrowthStarts of them.
 constexpr std::size_t kStarts = 4;
+constexpr std::size_t kGrowthStarts = 3;
 // A start overlapping more than this share of the seed's radius is not
 // tried: the zone cannot absorb that much.
 constexpr double kWorstStart = 0.5;
@@ -34,35 +41,16 @@ constexpr double kWorstStart = 0.5;
 constexpr int kSettlePasses = 30;
 constexpr double kSettleStep = 0.1;
 constexpr int kAloneSweeps = 30;
-// A seed moves at most this share of the width from where it was; a
-// matrix sphere at distance d from the nearest seed at most that times
-// (1 - d / width): nothing moves at the zone's edge, so it blends into the
-// frozen far field, and nothing leaves the zone.
-constexpr double kMoveShare = 0.5;
 // A moved sphere ends overlapping nothing by more than this share of tol
 // (the checks after the fix use tol itself: room for their rounding).
 constexpr double kInnerTol = 0.5;
-
-struct Body {
-  Vec3 x, x0;
-  double R = 0;        // its own radius
-  double scale = 1;    // its radius now, over R (below 1 only while a seed grows)
-  double w = 0;        // mobility in the current growth: 1 at its seed, towards 0 at the edge
-  double cap = 0;      // largest distance from x0
-  std::int64_t id = 0;
-  bool seed = false, movable = false, rebar = false, present = true;
-  bool active = false;    // moves in the current growth
-  bool placed = false;    // a seed put back
-  double w_zone = 0;      // mobility in the settling: 1 - (distance to the nearest seed) / width
-  int bar = -1;           // the nearest rebar sphere (a matrix sphere settles towards it)
-};
-
-struct Contact {
-  int j = 0;
-  // The pair's overlap at the start (non-seed pairs): left as it was
-  // while neither moves (the packing's own overlaps are not the fix's).
-  double allowed = 0;
-};
+// Compaction: the zone's matrix pulled towards its bar (kPull of its
+// radius, times its mobility, as a force) for kCompactIters FIRE steps,
+// then relaxed without the pull for kRelaxIters (kRelaxMore more when its
+// overlaps are below kNearlyJammed); up to kCompactTries, the pull times
+// kPullDecay each; kept only when the zone ends clear.
+constexpr double kPull = 0.1, kPullDecay = 0.3, kNearlyJammed = 1e-3;
+constexpr int kCompactTries = 3, kCompactIters = 1000, kRelaxMore = 4000;
 
 // The zone of one block's seeds: its bodies (seeds, movable matrix
 // spheres, frozen spheres around them), their possible contacts, and the
@@ -73,18 +61,20 @@ public:
        const Settings &settings, const Domain &domain)
       : settings_(settings), domain_(domain), width_(width)
   {
-    collect(reads, seeds);
-    find_contacts();
+    bodies_ = zone_bodies(reads, seeds, width);
+    contacts_ = zone_contacts(bodies_);
   }
 
   // First the zone's matrix settles onto the bars, the seeds taken out:
   // the room the targets left is spread in caps against the bars, too
-  // small for a sphere each; settling gathers it away from the bars.
-  // Then the seeds one by one, by id: each grows from the least
-  // overlapped places near where it was while its zone makes room; one
-  // that cannot fit leaves its zone as it found it and is deleted. No
-  // matrix sphere is deleted, and a seed placed stays a movable sphere of
-  // the zone for the seeds after it.
+  // small for a sphere each; settling (hard spheres), then compaction
+  // (soft spheres pulled towards the bars, relaxed) gather it away from
+  // the bars and make the layer against them dense. Then the seeds one by
+  // one, by id: each grows from the least overlapped places near where it
+  // was while the whole zone relaxes (FIRE); one that cannot fit leaves
+  // the zone as it found it and is deleted. No matrix sphere is deleted,
+  // and a seed placed stays a movable sphere of the zone for the seeds
+  // after it.
   std::vector<RoundRecord> run(RegrowthStats &stats)
   {
     delete_displaced(stats);
@@ -95,6 +85,7 @@ public:
         bodies_[i].present = false;    // vacant until its turn
       }
     settle_onto_bars(stats);
+    compact(stats);
     for (std::size_t i : waiting) {
       bodies_[i].present = true;
       grow_seed(i, stats);
@@ -103,21 +94,6 @@ public:
   }
 
 private:
-  double radius(const Body &b) const { return b.R * b.scale; }
-
-  // The deepest overlap (over the seed's radius) a sphere of seed s's
-  // radius would have at p with the present spheres.
-  double overlap_at(std::size_t s, Vec3 p) const
-  {
-    const Body &seed = bodies_[s];
-    double deepest = 0;
-    for (const Contact &c : contacts_[s]) {
-      const Body &o = bodies_[static_cast<std::size_t>(c.j)];
-      if (o.present) deepest = std::max(deepest, seed.R + o.R - norm(p - o.x));
-    }
-    return deepest / seed.R;
-  }
-
   // Where seed s may start: the points of a lattice (a quarter of its
   // radius apart) within its cap of where it was that overlap least, the
   // least first, admissible, at most kStarts, at least a radius apart.
@@ -126,13 +102,25 @@ private:
     const Body &seed = bodies_[s];
     const double h = 0.25 * seed.R;
     const int n = static_cast<int>(std::floor(seed.cap / h));
+    // The present spheres a point within the cap can touch.
+    std::vector<std::pair<Vec3, double>> near;
+    for (const Contact &c : contacts_[s]) {
+      const Body &o = bodies_[static_cast<std::size_t>(c.j)];
+      if (o.present && norm(o.x - seed.x0) < seed.cap + seed.R + o.R) near.push_back({o.x, o.R});
+    }
+    const auto overlap_at = [&](Vec3 p) {
+      double deepest = 0;
+      for (const auto &o : near) deepest = std::max(deepest, seed.R + o.second - norm(p - o.first));
+      return deepest / seed.R;
+    };
     std::vector<std::pair<double, Vec3>> scored;
     for (int i = -n; i <= n; ++i)
       for (int j = -n; j <= n; ++j)
         for (int k = -n; k <= n; ++k) {
           const Vec3 d{i * h, j * h, k * h};
           if (norm(d) > seed.cap) continue;
-          scored.push_back({overlap_at(s, seed.x0 + d), seed.x0 + d});
+          const double o = overlap_at(seed.x0 + d);
+          if (o <= kWorstStart) scored.push_back({o, seed.x0 + d});
         }
     std::stable_sort(scored.begin(), scored.end(),
                      [](const std::pair<double, Vec3> &a, const std::pair<double, Vec3> &b) {
@@ -228,8 +216,8 @@ private:
   }
 
   // Seed s goes to the first of its starts where it fits alone; else it
-  // grows from the best one while its zone makes room; a failed try leaves
-  // the zone as it was.
+  // grows from the best ones in turn while the whole zone makes room; a
+  // failed try leaves the zone as it was.
   void grow_seed(std::size_t s, RegrowthStats &stats)
   {
     Body &seed = bodies_[s];
@@ -237,8 +225,8 @@ private:
     bool clear = false;
     for (std::size_t k = 0; k < places.size() && !clear; ++k)
       clear = fits_alone(s, places[k], stats);
-    if (!clear && !places.empty()) {
-      seed.x = places.front();
+    for (std::size_t k = 0; k < std::min(places.size(), kGrowthStarts) && !clear; ++k) {
+      seed.x = places[k];
       clear = try_growth(s, stats);
     }
     if (!clear) seed.x = seed.x0;
@@ -246,136 +234,89 @@ private:
     seed.placed = clear;
   }
 
-  bool try_growth(std::size_t s, RegrowthStats &stats)
+  // The zone's present movable spheres made active (in id order), their
+  // places saved.
+  void activate_zone()
   {
-    Body &seed = bodies_[s];
-    // The zone of this seed: the movable spheres within the width of it.
     active_.clear();
-    active_.push_back(s);
+    saved_.clear();
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
       Body &b = bodies_[i];
-      if (i == s || !b.movable || !b.present || (b.seed && !b.placed)) continue;
-      const double d = norm(b.x - seed.x);
-      if (!(d < width_)) continue;
-      b.w = 1 - d / width_;
+      if (!b.movable || !b.present) continue;
+      b.active = true;
+      b.w = 1;
       active_.push_back(i);
+      saved_.push_back(b.x);
     }
-    seed.w = 1;
-    saved_.clear();
-    for (std::size_t i : active_) {
-      bodies_[i].active = true;
-      saved_.push_back(bodies_[i].x);
-    }
-    for (int step = 0; step <= kGrowthSteps; ++step) {
-      seed.scale = kStartScale + (1 - kStartScale) * step / kGrowthSteps;
-      for (int k = 0; k < kSweepsPerStep; ++k)
-        if (sweep(stats) < kSettled) break;
-    }
-    bool clear = false;
-    for (int k = 0; k < kFinalSweeps && !clear; ++k)
-      clear = sweep(stats) <= kInnerTol * settings_.tol;
-    for (std::size_t i : active_)
-      if (clear && excess_of(i) > 0) clear = false;
+  }
+
+  // The active spheres made inactive, back where they were unless `keep`.
+  void deactivate_zone(bool keep)
+  {
     for (std::size_t n = 0; n < active_.size(); ++n) {
       Body &b = bodies_[active_[n]];
       b.active = false;
-      if (!clear) b.x = saved_[n];
+      if (!keep) b.x = saved_[n];
     }
+    active_.clear();
+  }
+
+  // True when no active sphere overlaps anything by more than tol, after
+  // FIRE left overlaps of at most `worst`: at once when they are below
+  // kUnjam of tol, else by at most kFinalSweeps projection sweeps when they
+  // are below kNearlyClear.
+  bool finish_clear(double worst, RegrowthStats &stats)
+  {
+    bool clear = false;
+    if (worst <= kUnjam * settings_.tol) {
+      clear = true;
+    } else if (worst <= kNearlyClear) {
+      for (int k = 0; k < kFinalSweeps && !clear; ++k)
+        clear = sweep(stats) <= kInnerTol * settings_.tol;
+    }
+    for (std::size_t i : active_)
+      if (clear && excess_of(i) > 0) clear = false;
     return clear;
   }
 
-  void collect(const std::vector<Particle> &reads, const std::vector<std::size_t> &seeds)
+  // Seed s grows from where it is while every movable sphere of the zone
+  // relaxes; true when the zone ends clear, else it goes back.
+  bool try_growth(std::size_t s, RegrowthStats &stats)
   {
-    std::vector<std::size_t> seed_list(seeds);
-    std::sort(seed_list.begin(), seed_list.end(),
-              [&](std::size_t a, std::size_t b) { return reads[a].id < reads[b].id; });
-    // Only the nearest seed within the width matters (cells of that size).
-    CellGrid near_seed(width_);
-    for (std::size_t s : seed_list) near_seed.insert_around(reads[s].x, static_cast<int>(s));
-    std::unordered_map<std::int64_t, int> copies;
-    for (std::size_t k = 0; k < reads.size(); ++k) {
-      const Particle &p = reads[k];
-      if (p.role == Role::Target) continue;    // vacant (other blocks' targets, images)
-      double nearest = INFINITY;
-      near_seed.for_each_in_cell(p.x, [&](int s) {
-        nearest = std::min(nearest, norm(reads[static_cast<std::size_t>(s)].x - p.x));
-      });
-      Body b;
-      b.x = b.x0 = p.x;
-      b.R = p.r;
-      b.id = p.id;
-      b.rebar = p.role == Role::Rebar;
-      b.movable = p.role == Role::Matrix && p.pushable && !p.other_rebar && nearest < width_;
-      if (b.movable) {
-        b.w_zone = 1 - nearest / width_;
-        b.cap = kMoveShare * width_ * b.w_zone;
-        copies[b.id]++;
-      }
-      bodies_.push_back(b);
+    Body &seed = bodies_[s];
+    activate_zone();
+    double worst = 0;
+    for (int step = 0; step <= kGrowthSteps && worst <= kAbort; ++step) {
+      seed.scale = kStartScale + (1 - kStartScale) * step / kGrowthSteps;
+      worst = relax_.run(kStepIters, kSettled, stats.sweeps);
     }
-    // An atom seen twice here (periodic images) stays where it is: moving
-    // one copy would leave the other behind.
-    for (Body &b : bodies_)
-      if (b.movable && copies[b.id] > 1) b.movable = false;
-    for (std::size_t s : seed_list) {
-      Body b;
-      b.x = b.x0 = reads[s].x;
-      b.R = reads[s].r;
-      b.id = reads[s].id;
-      b.seed = b.movable = true;
-      b.cap = kMoveShare * width_;
-      bodies_.push_back(b);
-    }
-    // Sweeps go by id (then place: frozen images share one), whatever the
-    // order of `reads`.
-    std::sort(bodies_.begin(), bodies_.end(), [](const Body &a, const Body &b) {
-      return std::tie(a.id, a.x0.x, a.x0.y, a.x0.z) < std::tie(b.id, b.x0.x, b.x0.y, b.x0.z);
-    });
-    std::vector<int> bars;
-    for (std::size_t k = 0; k < bodies_.size(); ++k)
-      if (bodies_[k].rebar) bars.push_back(static_cast<int>(k));
-    for (Body &b : bodies_) {
-      if (!b.movable || b.seed) continue;
-      double nearest = INFINITY;
-      for (int k : bars) {
-        const Body &bar = bodies_[static_cast<std::size_t>(k)];
-        const double gap = norm(b.x0 - bar.x0) - bar.R;
-        if (gap < nearest) {
-          nearest = gap;
-          b.bar = k;
-        }
-      }
-    }
+    if (worst <= kAbort) worst = relax_.run(kRelaxIters, kUnjam * settings_.tol, stats.sweeps);
+    seed.scale = 1;
+    const bool clear = worst <= kAbort && finish_clear(worst, stats);
+    deactivate_zone(clear);
+    return clear;
   }
 
-  void find_contacts()
+  // The zone's matrix (the seeds out) pulled towards the bars as soft
+  // spheres, then relaxed: kept when it ends clear, else tried again with
+  // a weaker pull, or left as it was.
+  void compact(RegrowthStats &stats)
   {
-    double largest = 0, cap = 0;
-    for (const Body &b : bodies_) {
-      largest = std::max(largest, b.R);
-      cap = std::max(cap, b.cap);
+    activate_zone();
+    const std::vector<Vec3> before = saved_;
+    bool clear = false;
+    double pull = kPull;
+    for (int k = 0; k < kCompactTries && !clear; ++k, pull *= kPullDecay) {
+      for (std::size_t n = 0; n < active_.size(); ++n) bodies_[active_[n]].x = before[n];
+      relax_.set_pull(pull);
+      relax_.run(kCompactIters, 0, stats.sweeps);
+      relax_.set_pull(0);
+      double worst = relax_.run(kRelaxIters, kUnjam * settings_.tol, stats.sweeps);
+      if (worst > kUnjam * settings_.tol && worst < kNearlyJammed)
+        worst = relax_.run(kRelaxMore, kUnjam * settings_.tol, stats.sweeps);
+      clear = finish_clear(worst, stats);
     }
-    CellGrid grid(2 * (largest + cap));
-    for (std::size_t k = 0; k < bodies_.size(); ++k)
-      grid.insert(bodies_[k].x0, static_cast<int>(k));
-    contacts_.assign(bodies_.size(), {});
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
-      const Body &b = bodies_[i];
-      if (!b.movable) continue;
-      grid.for_each_near(b.x0, b.R + largest + b.cap + cap, [&](int j) {
-        if (static_cast<std::size_t>(j) == i) return;
-        const Body &o = bodies_[static_cast<std::size_t>(j)];
-        // Neither can come closer than this: caps bound their moves.
-        const double reach = b.R + o.R + b.cap + o.cap;
-        if (!(norm(b.x0 - o.x0) < reach)) return;
-        Contact c;
-        c.j = j;
-        if (!b.seed && !o.seed) c.allowed = std::max(0.0, b.R + o.R - norm(b.x0 - o.x0));
-        contacts_[i].push_back(c);
-      });
-      std::sort(contacts_[i].begin(), contacts_[i].end(),
-                [](const Contact &a, const Contact &c) { return a.j < c.j; });
-    }
+    deactivate_zone(clear);
   }
 
   // A seed whose centre lies inside a bar sphere is what the bar displaces:
@@ -403,13 +344,6 @@ private:
     const bool unmoved = b.x.x == b.x0.x && b.x.y == b.x0.y && b.x.z == b.x0.z && o.x.x == o.x0.x &&
                          o.x.y == o.x0.y && o.x.z == o.x0.z;
     return unmoved ? c.allowed : 0;
-  }
-
-  // The direction from o to b; for coincident centres one fixed by the ids.
-  static Vec3 apart(const Body &b, const Body &o, double dist)
-  {
-    if (dist > 1e-12 * (b.R + o.R)) return (1 / dist) * (b.x - o.x);
-    return Vec3{b.id < o.id ? -1.0 : 1.0, 0, 0};
   }
 
   // One Gauss-Seidel sweep over the active spheres: each, by id, moves out
@@ -503,8 +437,9 @@ private:
   double width_;
   std::vector<Body> bodies_;
   std::vector<std::vector<Contact>> contacts_;
-  std::vector<std::size_t> active_;    // the current growth's spheres, the seed first
+  std::vector<std::size_t> active_;    // the spheres that move now (by id)
   std::vector<Vec3> saved_;            // where they were before it
+  SoftRelaxation relax_{bodies_, contacts_, active_, domain_, settings_.tol};
 };
 
 }    // namespace

@@ -1,11 +1,11 @@
-// Regrowth: room made for the targets the voids could not take, by growing
-// the matrix near them back around the bars (docs/design.md, "Regrowth").
-// The targets of a block left without a place (the seeds) start where they
-// were, shrunk, and the matrix spheres within `width` of them shrunk less
-// the farther they are; all grow back to their own radii while overlaps are
-// projected out, the bars and everything beyond the zone frozen. A seed
-// that still cannot fit is deleted (the most overlapped first), so the zone
-// keeps as many spheres as it holds without compression.
+// Regrowth: room made for the targets the voids could not take, by moving
+// the matrix near them (docs/design.md, "Regrowth"). The targets of a
+// block left without a place (the seeds) are taken out; the zone's matrix
+// (within `width` of them) settles onto the bars as hard spheres, then is
+// compacted against them as soft spheres; then each seed, by id, goes back
+// at its own radius where it fits alone, or grows there while the zone
+// relaxes. A seed that cannot fit is deleted and the zone left as it was;
+// the bars and everything beyond the zone are frozen, sizes never change.
 #pragma once
 
 #include "reinforce_relocation.h"
@@ -29,6 +29,12 @@ struct RegrowthStats {
   double max_overlap = 0;    // largest overlap of a regrown or moved sphere, / rmin
   double max_move = 0;       // largest displacement of a matrix sphere, / rmin
 };
+
+// A seed moves at most this share of the width from where it was; a
+// matrix sphere at distance d from the nearest seed at most that times
+// (1 - d / width): nothing moves at the zone's edge, so it blends into the
+// frozen far field, and nothing leaves the zone.
+constexpr double kRegrowthMoveShare = 0.9;
 
 // How far the regrowth of one seed reaches from its centre: it moves
 // spheres whose centres lie within `write` (before and after) and reads

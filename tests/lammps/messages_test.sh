@@ -125,7 +125,7 @@ case $case in
     ;;
   unplaced_isolated)
     [ -n "$expected" ] || { echo "messages_test.sh: unplaced_isolated needs EXPECTED"; exit 2; }
-    run in.messages -var data none -var single yes
+    run in.messages -var data none -var single yes -var fixextra "regrow no"
     read -r t r d _ <<<"$(totals TOTALS)"
     [ "$t $r $d" = "1 0 1" ] || fail "expected 1 target, 0 relocated, 1 deleted; got $t $r $d"
     line=$(grep '^fix reinforce/invert: unplaced:' "$work/log" || true)
