@@ -53,7 +53,7 @@ foreach(np 1 2 4)
   src_scene(scene_basic ${np} ${AS_PLUGIN} "${BASIC}" "" "${RANGE}")
 endforeach()
 foreach(map array hash none)
-  src_scene(scene_deleting_map_${map} 2 ${AS_PLUGIN} "${BASIC}" "-var extra 'tries 4' -var map ${map}" "${RANGE}")
+  src_scene(scene_deleting_map_${map} 2 ${AS_PLUGIN} "${BASIC}" "-var extra 'tries 4 regrow no' -var map ${map}" "${RANGE}")
   set_tests_properties(src_lammps_scene_deleting_map_${map}_np2 PROPERTIES PASS_REGULAR_EXPRESSION
                        "deleted [1-9][0-9]* kept 0.*PASS scene_deleting_map_${map} np=2")
 endforeach()
@@ -70,7 +70,7 @@ foreach(grid "2 1 1" "2 2 1")
   set(SEAMS_2x1x1 "x=0,0.3/y=0")
   set(SEAMS_2x2x1 "x=0,0.3/y=0,0.15")
   src_scene(periodic_${tag} ${np} ${AS_PLUGIN} "${PERIODIC}"
-            "-var bx p -var by p -var procs '${grid}' -var extra 'tries 15'" "${RANGE}"
+            "-var bx p -var by p -var procs '${grid}' -var extra 'tries 15 regrow no'" "${RANGE}"
             "SCENE_REFERENCE=1" "SCENE_POST=${SCRIPTS}/seam_share.sh 0.008 ${SEAMS_${tag}}")
   set_tests_properties(src_lammps_periodic_${tag}_np${np} PROPERTIES PASS_REGULAR_EXPRESSION
                        "deleted [1-9].*PASS: no thinning at seams.*PASS periodic_${tag} np=${np}")
@@ -167,7 +167,7 @@ set_tests_properties(src_lammps_done_fix_never_stops_a_run PROPERTIES TIMEOUT 18
 # ---- The in-tree package (cmake -D PKG_REINFORCE=on), one scene; the
 # bigbig host (64-bit atom IDs) with its plugin, one scene.
 src_scene(package_scene_basic 2 ${HOSTS}/as-build-package "${BASIC}" "-var extra 'tries 4'" "${RANGE}")
-src_scene(bigbig_scene_basic 2 ${HOSTS}/as-build-bigbig "${BASIC}" "-var extra 'tries 4' -var map hash" "${RANGE}")
+src_scene(bigbig_scene_basic 2 ${HOSTS}/as-build-bigbig "${BASIC}" "-var extra 'tries 4 regrow no' -var map hash" "${RANGE}")
 set_tests_properties(src_lammps_bigbig_scene_basic_np2 PROPERTIES PASS_REGULAR_EXPRESSION
                      "deleted [1-9][0-9]* kept 0.*PASS bigbig_scene_basic np=2")
 add_test(NAME src_lammps_package_registered
