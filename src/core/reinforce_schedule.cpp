@@ -60,8 +60,8 @@ double BlockLattice::reach_beyond(Vec3 sub_lo, Vec3 sub_hi) const
     for (int k = from; k <= to; ++k) {
       const double centre = lo[d] + (k + 0.5) * width[d];
       if (!(centre >= sub_lo[d] && centre < sub_hi[d])) continue;
-      reach = std::max({reach, sub_lo[d] - (lo[d] + k * width[d]),
-                        lo[d] + (k + 1) * width[d] - sub_hi[d]});
+      reach = std::max(
+          {reach, sub_lo[d] - (lo[d] + k * width[d]), lo[d] + (k + 1) * width[d] - sub_hi[d]});
     }
   }
   return reach;
