@@ -118,6 +118,17 @@ double worst_overlap_of_moved(const std::vector<Particle> &after, const Scene &b
   return worst;
 }
 
+// The targets of s marked and relocated with size keep, no pushing, every
+// target tried; `st` gets the settings.
+Relocation relocate_keep_without_push(Scene &s, Settings &st, Stats &stats)
+{
+  st = default_settings();
+  st.push = 0;
+  st.displaced = 2;
+  mark(s, st.tol);
+  return relocate_targets(s.particles, st, s.domain, false, stats);
+}
+
 // The same targets, outcomes, places, radii and pushes, bit for bit.
 void expect_same_relocation(const Relocation &a, const Relocation &b)
 {
@@ -253,12 +264,9 @@ TEST(Engine, KeepModeKeepsRadiiAndMakesRoom)
 TEST(Engine, KeepModeWithoutPushKeepsRadiiWhereAVoidHoldsThem)
 {
   Scene s = make_scene(1);
-  Settings st = default_settings();
-  st.push = 0;
-  st.displaced = 2;
-  mark(s, st.tol);
+  Settings st;
   Stats stats;
-  const Relocation rel = relocate_targets(s.particles, st, s.domain, false, stats);
+  const Relocation rel = relocate_keep_without_push(s, st, stats);
   ASSERT_GT(stats.targets, 10);
   EXPECT_TRUE(rel.pushes.empty());
   EXPECT_EQ(stats.pushed, 0);
@@ -293,6 +301,42 @@ TEST(Engine, KeepModeWithoutPushKeepsRadiiWhereAVoidHoldsThem)
     return sum;
   };
   EXPECT_LT(radius_change(rel), 0.5 * radius_change(fitted));
+}
+
+// The targets placed with a radius below their own are counted; those a
+// bar thin beside them crossed (no rebar sphere above kThinBar of their
+// radius) are listed with where they were and their own radius, for the
+// regrowth; across a thick bar none is listed. (Size fit: most targets
+// take a smaller void's radius.)
+TEST(Engine, ShrunkAcrossThinBarsAreListed)
+{
+  for (const double bar_r : {0.008, 0.03}) {
+    Scene s = make_scene(3, bar_r);
+    Settings st = default_settings(SizeMode::Fit);
+    st.displaced = 2;
+    mark(s, st.tol);
+    Stats stats;
+    const Relocation rel = relocate_targets(s.particles, st, s.domain, false, stats);
+    std::vector<std::int64_t> shrunk;
+    for (const TargetResult &t : rel.targets)
+      if (t.outcome == Outcome::Placed && t.r < s.particles[t.index].r) shrunk.push_back(t.id);
+    ASSERT_GT(shrunk.size(), 0u) << bar_r;
+    EXPECT_EQ(stats.shrunk, static_cast<std::int64_t>(shrunk.size()));
+    if (bar_r > kThinBar * kRmin) {
+      EXPECT_TRUE(rel.shrunk_by_thin.empty());
+      continue;
+    }
+    ASSERT_EQ(rel.shrunk_by_thin.size(), shrunk.size());
+    for (std::size_t k = 0; k < shrunk.size(); ++k) {
+      const ShrunkTarget &t = rel.shrunk_by_thin[k];
+      EXPECT_EQ(t.id, shrunk[k]);
+      bool found = false;
+      for (const Particle &p : s.particles)
+        found = found || (p.id == t.id && p.x.x == t.x0.x && p.x.y == t.x0.y && p.x.z == t.x0.z &&
+                          p.r == t.r0);
+      EXPECT_TRUE(found) << t.id;
+    }
+  }
 }
 
 TEST(Engine, TargetsAreExactlyTheSpheresOverlappingRebar)

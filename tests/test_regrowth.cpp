@@ -230,6 +230,96 @@ TEST(Regrowth, OrderFreeFiniteAndWithinTheZone)
   EXPECT_LE(largest_overlap_after(reads, a), 1e-6);
 }
 
+namespace {
+
+// A thin bar (rebar spheres of radius 0.02, 0.03 apart, along y) through
+// (0.03, y, 0), crossing a target of radius 0.1 at the origin (id 2): the
+// relocation placed it shrunk (radius 0.05) at (0, 0, 0.25), where its
+// present sphere now is. Then `more`.
+std::vector<Particle> thin_bar_and_shrunk_target(std::vector<Particle> more = {})
+{
+  std::vector<Particle> reads;
+  std::int64_t id = 100;
+  for (int k = -8; k <= 8; ++k)
+    reads.push_back(sphere({0.03, 0.03 * k, 0}, 0.02, id++, Role::Rebar));
+  reads.push_back(sphere({0, 0, 0}, 0.1, 2, Role::Target));
+  reads.push_back(sphere({0, 0, 0.25}, 0.05, 2, Role::Matrix));
+  reads.insert(reads.end(), more.begin(), more.end());
+  return reads;
+}
+
+// The largest overlap (over the smaller radius) of sphere (x, r) with the
+// present spheres of `reads` other than atom `id`.
+double overlap_with_others(const std::vector<Particle> &reads, Vec3 x, double r, std::int64_t id)
+{
+  double worst = -INFINITY;
+  for (const Particle &p : reads)
+    if (p.id != id && p.role != Role::Target)
+      worst = std::max(worst, (p.r + r - norm(p.x - x)) / std::min(p.r, r));
+  return worst;
+}
+
+}    // namespace
+
+// A target shrunk across a thin bar goes back at its own radius near where
+// it was, clear of the bar: one Placed record for the atom (it moves from
+// its shrunk place), nothing deleted, and counted apart from the targets
+// without a void.
+TEST(Regrowth, ShrunkAcrossAThinBarGoesBackAtItsRadius)
+{
+  const std::vector<Particle> reads = thin_bar_and_shrunk_target();
+  std::size_t seed = 0;
+  while (reads[seed].role != Role::Target) ++seed;
+  RegrowthStats stats;
+  const std::vector<RoundRecord> rec =
+      regrow(reads, {seed}, 0.3, settings_for(0.1), open_box(), stats);
+  ASSERT_EQ(rec.size(), 1u);
+  EXPECT_EQ(rec[0].kind, RecordKind::Placed);
+  EXPECT_EQ(rec[0].id, 2);
+  EXPECT_EQ(rec[0].r, 0.1);
+  EXPECT_LE(overlap_with_others(reads, rec[0].v, 0.1, 2), 1e-6);
+  // The smallest move that clears the bar is at most its radius and the
+  // target's: it stays near where it was.
+  EXPECT_LE(norm(rec[0].v), 0.1 + 0.02 + 0.03);
+  EXPECT_EQ(stats.shrunk_seeds, 1);
+  EXPECT_EQ(stats.shrunk_regrown, 1);
+  EXPECT_EQ(stats.seeds, 0);
+  EXPECT_EQ(stats.deleted, 0);
+  EXPECT_NEAR(stats.volume_regrown, 4.0 / 3.0 * M_PI * (1e-3 - 1.25e-4), 1e-12);
+}
+
+// Caged by spheres that may not move, the target cannot grow back: it is
+// neither placed nor deleted (its shrunk sphere stays, at most settled
+// onto the bar with the zone's matrix), and nothing else is deleted.
+TEST(Regrowth, ShrunkThatCannotGrowBackStaysShrunk)
+{
+  std::vector<Particle> cage;
+  std::int64_t id = 10;
+  for (int i = -1; i <= 1; ++i)
+    for (int j = -1; j <= 1; ++j)
+      for (int k = -1; k <= 1; ++k) {
+        const Vec3 c = 0.2 * Vec3{double(i), double(j), double(k)};
+        if (i == 0 && j == 0 && k == 0) continue;
+        Particle p = sphere(c, 0.1, id++, Role::Matrix);
+        p.pushable = false;
+        cage.push_back(p);
+      }
+  std::vector<Particle> reads = thin_bar_and_shrunk_target(cage);
+  // Its shrunk sphere inside the cage, beside the bar.
+  for (Particle &p : reads)
+    if (p.id == 2 && p.role == Role::Matrix) p.x = {-0.045, 0, 0};
+  std::size_t seed = 0;
+  while (reads[seed].role != Role::Target) ++seed;
+  RegrowthStats stats;
+  const std::vector<RoundRecord> rec =
+      regrow(reads, {seed}, 0.3, settings_for(0.1), open_box(), stats);
+  for (const RoundRecord &r : rec) EXPECT_EQ(r.kind, RecordKind::Pushed);
+  EXPECT_EQ(stats.shrunk_seeds, 1);
+  EXPECT_EQ(stats.shrunk_regrown, 0);
+  EXPECT_EQ(stats.deleted, 0);
+  EXPECT_EQ(stats.volume_regrown, 0);
+}
+
 // The reach: it writes within the width and reads the width plus the two
 // largest radii (a hair more), whatever the width.
 TEST(Regrowth, Reach)

@@ -1,4 +1,5 @@
 // The records a round's results travel as between processes.
+#include "reinforce_live_view.h"
 #include "reinforce_round_records.h"
 
 #include <gtest/gtest.h>
@@ -93,4 +94,40 @@ TEST(RoundRecords, RecordsOfARelocation)
   EXPECT_EQ(deferred[1].id, 12);
   EXPECT_EQ(deferred[1].kind, RecordKind::Deleted);
   EXPECT_EQ(deferred[2].kind, RecordKind::Pushed);
+}
+
+// A push moves the present sphere of an atom and leaves a vacant copy of
+// the same atom (a target taken up again where it was) where it is; a
+// placement replaces both.
+TEST(LiveView, PushesMoveOnlyThePresentCopy)
+{
+  Domain box;
+  box.lo = box.view_lo = box.sub_lo = {-1, -1, -1};
+  box.hi = box.view_hi = box.sub_hi = {1, 1, 1};
+  Particle vacant;
+  vacant.id = 7;
+  vacant.r = 0.1;
+  vacant.role = Role::Target;
+  Particle present = vacant;
+  present.x = {0.5, 0, 0};
+  present.r = 0.05;
+  present.role = Role::Matrix;
+  RoundsNear near(10);
+  near.add_target({0, 0, 0}, 0);
+  LiveView view({vacant, present}, near);
+  view.apply({{7, RecordKind::Pushed, {0, 0.25, 0}, 0}}, box);
+  std::vector<Particle> now;
+  view.read_by(0, now);
+  ASSERT_EQ(now.size(), 2u);
+  EXPECT_EQ(now[0].role, Role::Target);
+  EXPECT_EQ(now[0].x.y, 0);
+  EXPECT_EQ(now[1].role, Role::Matrix);
+  EXPECT_EQ(now[1].x.x, 0.5);
+  EXPECT_EQ(now[1].x.y, 0.25);
+  view.apply({{7, RecordKind::Placed, {0, -0.3, 0}, 0.1}}, box);
+  view.read_by(0, now);
+  ASSERT_EQ(now.size(), 1u);
+  EXPECT_EQ(now[0].role, Role::Matrix);
+  EXPECT_EQ(now[0].r, 0.1);
+  EXPECT_EQ(now[0].x.y, -0.3);
 }

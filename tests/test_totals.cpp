@@ -46,4 +46,6 @@ TEST(Totals, FieldsAreDistinctAndOutputWhereTheTableSays)
   EXPECT_EQ(out[8], t.seconds);
   EXPECT_EQ(out[9], t.packing_overlaps);
   EXPECT_EQ(out[15], static_cast<double>(t.stats.displaced));
+  EXPECT_EQ(out[25], static_cast<double>(t.stats.shrunk));
+  EXPECT_EQ(out[26], static_cast<double>(t.regrowth.shrunk_regrown));
 }

@@ -337,7 +337,8 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
   totals.deleted = options.keep_unplaced ? 0 : static_cast<double>(s.unplaced + s.matrix_deleted);
   totals.kept = options.keep_unplaced ? static_cast<double>(s.unplaced) : 0;
   totals.seconds = host.max(host.wall_time() - start);
-  if (totals.regrowth.seeds > 0) host.log(regrowth_line(totals.regrowth, totals.regrowth_seconds));
+  if (totals.regrowth.seeds + totals.regrowth.shrunk_seeds > 0)
+    host.log(regrowth_line(totals.regrowth, totals.regrowth_seconds));
   host.log(summary_line(s, options.keep_unplaced, totals.seconds, totals.rounds, unit));
   // Many targets that found no place (and no regrowth ran): say why and
   // what changes it.

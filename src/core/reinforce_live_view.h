@@ -84,6 +84,12 @@ public:
       const RecordKind what = rec.kind;
       const Vec3 v = rec.v;
       copies_of(id, copies);
+      // A push moves the present sphere only; a vacant copy of the same
+      // atom (a target the regrowth takes up again) stays where it is.
+      if (what == RecordKind::Pushed)
+        copies.erase(std::remove_if(copies.begin(), copies.end(),
+                                    [&](std::size_t c) { return view_[c].role == Role::Target; }),
+                     copies.end());
       if (what == RecordKind::Kept) {
         for (std::size_t c : copies) view_[c].role = Role::Matrix;
         continue;

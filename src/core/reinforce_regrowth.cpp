@@ -87,8 +87,13 @@ public:
     settle_onto_bars(stats);
     compact(stats);
     for (std::size_t i : waiting) {
+      const int twin = bodies_[i].twin;
+      // A shrunk sphere that may not move (beyond the zone, an image) stays.
+      if (twin >= 0 && !bodies_[static_cast<std::size_t>(twin)].movable) continue;
+      if (twin >= 0) bodies_[static_cast<std::size_t>(twin)].present = false;
       bodies_[i].present = true;
       grow_seed(i, stats);
+      if (twin >= 0 && !bodies_[i].placed) bodies_[static_cast<std::size_t>(twin)].present = true;
     }
     return records(stats);
   }
@@ -96,7 +101,8 @@ public:
 private:
   // Where seed s may start: the points of a lattice (a quarter of its
   // radius apart) within its cap of where it was that overlap least, the
-  // least first, admissible, at most kStarts, at least a radius apart.
+  // least first (then the nearest), admissible, at most kStarts, at least
+  // a radius apart.
   std::vector<Vec3> starts(std::size_t s) const
   {
     const Body &seed = bodies_[s];
@@ -122,9 +128,12 @@ private:
           const double o = overlap_at(seed.x0 + d);
           if (o <= kWorstStart) scored.push_back({o, seed.x0 + d});
         }
+    // The least overlapped first, and of equal ones the nearest to where
+    // it was: the smallest move that clears it.
     std::stable_sort(scored.begin(), scored.end(),
-                     [](const std::pair<double, Vec3> &a, const std::pair<double, Vec3> &b) {
-                       return a.first < b.first;
+                     [&](const std::pair<double, Vec3> &a, const std::pair<double, Vec3> &b) {
+                       if (a.first != b.first) return a.first < b.first;
+                       return norm2(a.second - seed.x0) < norm2(b.second - seed.x0);
                      });
     std::vector<Vec3> out;
     for (const auto &c : scored) {
@@ -325,7 +334,7 @@ private:
   {
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
       Body &b = bodies_[i];
-      if (!b.seed) continue;
+      if (!b.seed || b.twin >= 0) continue;    // a shrunk one is placed already
       for (const Contact &c : contacts_[i]) {
         const Body &o = bodies_[static_cast<std::size_t>(c.j)];
         if (o.rebar && norm(b.x0 - o.x0) < o.R) {
@@ -403,14 +412,22 @@ private:
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
       const Body &b = bodies_[i];
       if (!b.movable) continue;
-      if (!b.present) {
+      const bool twin_placed = b.twin >= 0 && bodies_[static_cast<std::size_t>(b.twin)].placed;
+      if (!b.seed && twin_placed) continue;    // its seed's record moves the atom
+      if (b.seed && b.twin >= 0) {
+        stats.shrunk_seeds++;
+        if (!b.placed) continue;    // it stays shrunk where it was placed
+        stats.shrunk_regrown++;
+        const double r = bodies_[static_cast<std::size_t>(b.twin)].R;
+        stats.volume_regrown += 4.0 / 3.0 * M_PI * (b.R * b.R * b.R - r * r * r);
+        out.push_back({b.id, RecordKind::Placed, b.x, b.R});
+      } else if (!b.present) {
         (b.seed ? stats.deleted : stats.deleted_matrix)++;
         out.push_back({b.id, RecordKind::Deleted, b.x0, b.R});
         if (!b.seed) stats.volume_deleted_matrix += 4.0 / 3.0 * M_PI * b.R * b.R * b.R;
         if (b.seed) stats.seeds++;
         continue;
-      }
-      if (b.seed) {
+      } else if (b.seed) {
         stats.seeds++;
         stats.regrown++;
         stats.volume_regrown += 4.0 / 3.0 * M_PI * b.R * b.R * b.R;

@@ -6,6 +6,9 @@
 // at its own radius where it fits alone, or grows there while the zone
 // relaxes. A seed that cannot fit is deleted and the zone left as it was;
 // the bars and everything beyond the zone are frozen, sizes never change.
+// A target the relocation placed shrunk across thin bars is a seed too:
+// its shrunk sphere gives way while it tries its own radius, and stays
+// where that fails.
 #pragma once
 
 #include "reinforce_relocation.h"
@@ -21,10 +24,12 @@ struct RegrowthStats {
   std::int64_t regrown = 0;           // of them, put back at their own radius
   std::int64_t displaced = 0;         // of them, deleted first: centre inside a bar sphere
   std::int64_t deleted = 0;           // of them, deleted (displaced included)
+  std::int64_t shrunk_seeds = 0;      // targets placed shrunk across thin bars, taken up again
+  std::int64_t shrunk_regrown = 0;    // of them, put back at their own radius
   std::int64_t deleted_matrix = 0;    // matrix spheres deleted to clear the zone
   std::int64_t moved = 0;             // matrix spheres moved
   std::int64_t sweeps = 0;            // projection sweeps over a block's zone
-  double volume_regrown = 0;          // volume of the regrown seeds
+  double volume_regrown = 0;          // volume the regrown seeds added
   double volume_deleted_matrix = 0;
   double max_overlap = 0;    // largest overlap of a regrown or moved sphere, / rmin
   double max_move = 0;       // largest displacement of a matrix sphere, / rmin
@@ -48,9 +53,9 @@ RegrowthReach regrowth_reach(double width, double matrix_rmax, double largest_r)
 // Regrows the zone of the seeds `seeds` (indices of Target particles of
 // `reads`; `reads` holds every particle within regrowth_reach().read of
 // them, and what else it holds is frozen). Other Target particles are vacant. Returns a Placed
-// record for each seed kept, a Deleted one for each seed deleted, and a Pushed one (the
-// displacement) for each matrix sphere moved. The result depends only on the particles within reach
-// of the seeds, not on their order.
+// record for each seed kept, a Deleted one for each seed deleted (none for a shrunk one), and a
+// Pushed one (the displacement) for each matrix sphere moved. The result depends only on the
+// particles within reach of the seeds, not on their order.
 std::vector<RoundRecord> regrow(const std::vector<Particle> &reads,
                                 const std::vector<std::size_t> &seeds, double width,
                                 const Settings &settings, const Domain &domain,

@@ -62,6 +62,16 @@ std::vector<Body> zone_bodies(const std::vector<Particle> &reads,
   std::vector<int> bars;
   for (std::size_t k = 0; k < bodies.size(); ++k)
     if (bodies[k].rebar) bars.push_back(static_cast<int>(k));
+  // Twins: one id, sorted next to each other.
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    if (!bodies[k].seed) continue;
+    for (std::size_t j = k; j-- > 0 && bodies[j].id == bodies[k].id;)
+      if (!bodies[j].seed) bodies[k].twin = static_cast<int>(j);
+    for (std::size_t j = k + 1; j < bodies.size() && bodies[j].id == bodies[k].id; ++j)
+      if (!bodies[j].seed) bodies[k].twin = static_cast<int>(j);
+    if (bodies[k].twin >= 0)
+      bodies[static_cast<std::size_t>(bodies[k].twin)].twin = static_cast<int>(k);
+  }
   for (Body &b : bodies) {
     if (!b.movable || b.seed) continue;
     double nearest = INFINITY;

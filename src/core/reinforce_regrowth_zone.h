@@ -22,8 +22,11 @@ struct Body {
   bool seed = false, movable = false, rebar = false, present = true;
   bool active = false;    // moves in the current growth
   bool placed = false;    // a seed put back
-  double w_zone = 0;      // mobility in the settling: 1 - (distance to the nearest seed) / width
-  int bar = -1;           // the nearest rebar sphere (a matrix sphere settles towards it)
+  // A seed placed shrunk by the relocation and its present shrunk sphere
+  // (the same atom): each other's index, else -1.
+  int twin = -1;
+  double w_zone = 0;    // mobility in the settling: 1 - (distance to the nearest seed) / width
+  int bar = -1;         // the nearest rebar sphere (a matrix sphere settles towards it)
 };
 
 struct Contact {
@@ -37,8 +40,9 @@ struct Contact {
 // `reads`) in id order (then place): the seeds; the matrix spheres of the
 // fix group within `width` of a seed, movable within their caps
 // (kRegrowthMoveShare); everything else frozen; other Target particles
-// are vacant and left out. Each movable matrix sphere knows its nearest
-// rebar sphere.
+// are vacant and left out. A seed that shares its id with a present
+// sphere (a target the relocation placed shrunk) is its twin. Each movable
+// matrix sphere knows its nearest rebar sphere.
 std::vector<Body> zone_bodies(const std::vector<Particle> &reads,
                               const std::vector<std::size_t> &seeds, double width);
 

@@ -216,6 +216,11 @@ Relocation relocate_targets(const std::vector<Particle> &all, const Settings &se
     if (result.outcome == Outcome::Placed) {
       stats.relocated++;
       stats.volume_after += ball_volume(scene.r(fresh));
+      if (scene.r(fresh) < target.r * (1 - settings.tol)) {
+        stats.shrunk++;
+        if (scene.thickest_rebar_overlapping(target.x, target.r) <= kThinBar * target.r)
+          out.shrunk_by_thin.push_back({target.id, target.x, target.r});
+      }
     } else {
       stats.unplaced++;
       // Why, for the log: no group of four spheres to be tangent to at all.

@@ -108,6 +108,7 @@ struct Stats {
   std::int64_t sweeps = 0;        // rearrangement sweeps
   std::int64_t isolated = 0;      // unplaced with fewer than four spheres within `search`
   std::int64_t matrix_deleted = 0;    // matrix spheres (not targets) deleted to make room
+  std::int64_t shrunk = 0;            // relocated with a radius below its own
 };
 
 // The one copy of an atom that lies in the box (periodic images lie
@@ -155,9 +156,20 @@ struct Push {
   std::int64_t id = 0;
   Vec3 dx;
 };
+// A target placed with a radius below its own although only bars thin
+// beside it crossed it (no rebar sphere it overlaps is larger than
+// kThinBar of its radius): it displaced little, and the regrowth tries it
+// again at its own radius near where it was.
+constexpr double kThinBar = 0.5;
+struct ShrunkTarget {
+  std::int64_t id = 0;
+  Vec3 x0;          // where it was (the frame of the target's copy)
+  double r0 = 0;    // its own radius
+};
 struct Relocation {
-  std::vector<TargetResult> targets;    // in the order they were relocated
-  std::vector<Push> pushes;             // increasing id; none of the targets above
+  std::vector<TargetResult> targets;           // in the order they were relocated
+  std::vector<Push> pushes;                    // increasing id; none of the targets above
+  std::vector<ShrunkTarget> shrunk_by_thin;    // the targets above shrunk across thin bars
 };
 
 // Relocates the Target particles for which `mine` is true (default: the

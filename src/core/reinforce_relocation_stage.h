@@ -28,6 +28,8 @@ public:
   double read_reach() const override { return read_; }
   StageResult run(const std::vector<Particle> &reads,
                   const std::function<bool(const Particle &)> &mine) override;
+  // The targets this process placed shrunk across thin bars, so far.
+  const std::vector<ShrunkTarget> &shrunk_by_thin() const { return shrunk_by_thin_; }
 
 private:
   const Settings &settings_;
@@ -36,6 +38,7 @@ private:
   int classes_;
   double target_rmax_, class_width_, read_;
   Stats &stats_;
+  std::vector<ShrunkTarget> shrunk_by_thin_;
 };
 
 }    // namespace reinforce

@@ -5,6 +5,7 @@
 #include "reinforce_round_runner.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 
 namespace reinforce {
@@ -25,11 +26,37 @@ void log_schedule(HostHooks &host, const char *stage, const char *units, const R
   host.log(line);
 }
 
-// The regrowth of the targets the relocation left pending: a view made
-// again after the host's refresh (the relocation moved atoms across
-// subdomains), its own lattice and ghost reach.
+// Every process's targets placed shrunk across thin bars, in id order.
+std::vector<ShrunkTarget> gather_shrunk(HostHooks &host, const std::vector<ShrunkTarget> &mine)
+{
+  std::vector<double> flat;
+  for (const ShrunkTarget &t : mine) {
+    const std::uint64_t bits = static_cast<std::uint64_t>(t.id);
+    flat.insert(flat.end(),
+                {static_cast<double>(bits >> 32), static_cast<double>(bits & 0xffffffffu), t.x0.x,
+                 t.x0.y, t.x0.z, t.r0});
+  }
+  const std::vector<double> every = host.gather_all(flat);
+  std::vector<ShrunkTarget> out;
+  for (std::size_t k = 0; k + 6 <= every.size(); k += 6) {
+    const std::uint64_t bits =
+        (static_cast<std::uint64_t>(every[k]) << 32) | static_cast<std::uint64_t>(every[k + 1]);
+    out.push_back({static_cast<std::int64_t>(bits),
+                   {every[k + 2], every[k + 3], every[k + 4]},
+                   every[k + 5]});
+  }
+  std::sort(out.begin(), out.end(),
+            [](const ShrunkTarget &a, const ShrunkTarget &b) { return a.id < b.id; });
+  return out;
+}
+
+// The regrowth of the targets the relocation left pending, and of those it
+// placed shrunk across thin bars (`shrunk`, every process's: each is a
+// vacant target where it was, with its images, beside its shrunk sphere):
+// a view made again after the host's refresh (the relocation moved atoms
+// across subdomains), its own lattice and ghost reach.
 void regrow_pending(HostHooks &host, const Plan &relocation_plan, const AtomRanges &ranges,
-                    Totals &totals)
+                    const std::vector<ShrunkTarget> &shrunk, Totals &totals)
 {
   const double start = host.wall_time();
   Plan plan = relocation_plan;
@@ -40,6 +67,18 @@ void regrow_pending(HostHooks &host, const Plan &relocation_plan, const AtomRang
   const AtomArrays a = host.atoms();
   std::vector<int> local;
   std::vector<Particle> view = make_view(a, reach.read + 2 * ranges.largest, plan.domain, local);
+  for (const ShrunkTarget &t : shrunk) {
+    Particle p;
+    p.id = t.id;
+    p.r = t.r0;
+    p.role = Role::Target;
+    for (const Vec3 &image :
+         images_in_view(wrapped_into_box(t.x0, plan.domain), plan.domain, true)) {
+      p.x = image;
+      view.push_back(p);
+      local.push_back(-1);    // no atom of the host's: never owned
+    }
+  }
   RegrowthStage regrowth(plan.settings, plan.domain, plan.lattice, plan.settings.regrow,
                          ranges.matrix_rmax, ranges.largest, totals.regrowth);
   std::vector<int> doomed;
@@ -47,7 +86,8 @@ void regrow_pending(HostHooks &host, const Plan &relocation_plan, const AtomRang
       run_rounds(host, regrowth, {plan.lattice, plan.box, plan.domain, plan.partners},
                  std::move(view), local, a, doomed);
   host.remove(doomed);
-  const double seeds = host.sum(static_cast<double>(totals.regrowth.seeds));
+  const double seeds =
+      host.sum(static_cast<double>(totals.regrowth.seeds + totals.regrowth.shrunk_seeds));
   if (done.rounds > 0) log_schedule(host, "regrowth schedule", "targets", done, seeds);
   totals.regrowth_seconds = host.max(host.wall_time() - start);
 }
@@ -78,8 +118,10 @@ void run_stages(HostHooks &host, const FixOptions &options, const Plan &plan,
   log_schedule(host, "schedule", "targets", done, targets);
   if (unplaced != Unplaced::Defer) return;
   const Stats &s = totals.stats;
-  if (host.sum(static_cast<double>(s.unplaced - s.displaced)) > 0)
-    regrow_pending(host, plan, ranges, totals);
+  std::vector<ShrunkTarget> shrunk;
+  if (settings.size == SizeMode::Keep) shrunk = gather_shrunk(host, relocation.shrunk_by_thin());
+  if (host.sum(static_cast<double>(s.unplaced - s.displaced)) > 0 || !shrunk.empty())
+    regrow_pending(host, plan, ranges, shrunk, totals);
 }
 
 // The regrowth's outcome in the relocation's totals, so that they say
@@ -90,6 +132,7 @@ void fold_regrowth(Totals &t)
   const RegrowthStats &g = t.regrowth;
   Stats &s = t.stats;
   s.relocated += g.regrown;
+  s.shrunk -= g.shrunk_regrown;
   s.unplaced -= g.regrown;
   s.displaced += g.displaced;
   s.matrix_deleted += g.deleted_matrix;
@@ -103,11 +146,12 @@ std::string regrowth_line(const RegrowthStats &g, double seconds)
   char line[400];
   std::snprintf(line, sizeof line,
                 "fix reinforce/invert: regrowth: %lld targets without a void, %lld regrown at "
-                "their own radius, %lld deleted (%lld inside the bars), %lld matrix spheres "
-                "deleted, %lld moved (largest %.2f rmin), %lld sweeps, max overlap %.2e rmin, "
-                "%.3f s\n",
+                "their own radius, %lld deleted (%lld inside the bars); %lld shrunk across thin "
+                "bars, %lld regrown at their own radius; %lld matrix spheres deleted, %lld moved "
+                "(largest %.2f rmin), %lld sweeps, max overlap %.2e rmin, %.3f s\n",
                 static_cast<long long>(g.seeds), static_cast<long long>(g.regrown),
                 static_cast<long long>(g.deleted), static_cast<long long>(g.displaced),
+                static_cast<long long>(g.shrunk_seeds), static_cast<long long>(g.shrunk_regrown),
                 static_cast<long long>(g.deleted_matrix), static_cast<long long>(g.moved),
                 g.max_move, static_cast<long long>(g.sweeps), g.max_overlap, seconds);
   return line;

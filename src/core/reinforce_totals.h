@@ -1,6 +1,6 @@
 // The totals of one invocation and the one table of their fields: how
 // each is combined over the processes, and where the fix's global vector
-// (f_ID[1] to f_ID[25]) reports it (docs/fix_reinforce_invert.rst,
+// (f_ID[1] to f_ID[27]) reports it (docs/fix_reinforce_invert.rst,
 // "Output"). The reductions and the output vector read the table.
 #pragma once
 
@@ -37,11 +37,11 @@ struct TotalsField {
   void (*set)(Totals &, double);
 };
 
-constexpr int kOutputSize = 25;
-constexpr std::size_t kTotalsFields = 32;
+constexpr int kOutputSize = 27;
+constexpr std::size_t kTotalsFields = 35;
 const std::array<TotalsField, kTotalsFields> &totals_fields();
 
-// The fix's global vector, f_ID[1] to f_ID[25], in the order of the
+// The fix's global vector, f_ID[1] to f_ID[27], in the order of the
 // table's output indices.
 std::array<double, kOutputSize> output_vector(const Totals &t);
 
