@@ -5,7 +5,6 @@
 #include "reinforce_round_runner.h"
 
 #include <algorithm>
-#include <cstdint>
 #include <cstdio>
 
 namespace reinforce {
@@ -26,25 +25,18 @@ void log_schedule(HostHooks &host, const char *stage, const char *units, const R
   host.log(line);
 }
 
-// Every process's targets placed shrunk across thin bars, in id order.
+// Every process's targets placed shrunk across thin bars, in id order
+// (carried as records: their IDs exact).
 std::vector<ShrunkTarget> gather_shrunk(HostHooks &host, const std::vector<ShrunkTarget> &mine)
 {
+  std::vector<RoundRecord> records;
+  for (const ShrunkTarget &t : mine) records.push_back({t.id, RecordKind::Placed, t.x0, t.r0});
   std::vector<double> flat;
-  for (const ShrunkTarget &t : mine) {
-    const std::uint64_t bits = static_cast<std::uint64_t>(t.id);
-    flat.insert(flat.end(),
-                {static_cast<double>(bits >> 32), static_cast<double>(bits & 0xffffffffu), t.x0.x,
-                 t.x0.y, t.x0.z, t.r0});
-  }
-  const std::vector<double> every = host.gather_all(flat);
+  encode_records(records, flat);
+  if (!decode_records(host.gather_all(flat), records))
+    host.fail("Fix reinforce/invert: internal error: malformed list of shrunk targets");
   std::vector<ShrunkTarget> out;
-  for (std::size_t k = 0; k + 6 <= every.size(); k += 6) {
-    const std::uint64_t bits =
-        (static_cast<std::uint64_t>(every[k]) << 32) | static_cast<std::uint64_t>(every[k + 1]);
-    out.push_back({static_cast<std::int64_t>(bits),
-                   {every[k + 2], every[k + 3], every[k + 4]},
-                   every[k + 5]});
-  }
+  for (const RoundRecord &r : records) out.push_back({r.id, r.v, r.r});
   std::sort(out.begin(), out.end(),
             [](const ShrunkTarget &a, const ShrunkTarget &b) { return a.id < b.id; });
   return out;
