@@ -47,7 +47,7 @@ public:
     a.nlocal = a.nall = static_cast<int>(pos.size());
     a.x = rows.data();
     a.radius = radius.data();
-    a.tag = tag;
+    a.tag64 = tag.data();
     a.mask = mask.data();
     a.pending = pending.data();
     a.group_bit = kGroup;
@@ -58,7 +58,11 @@ public:
   }
   void set_pending(int i, bool p) override { pending[i] = p; }
   void forward_pending() override {}
-  void ensure_ghost_cutoff(double reach) override { cutoff_asked = reach; }
+  GhostCutoff ensure_ghost_cutoff(double reach) override
+  {
+    cutoff_asked = reach;
+    return {};
+  }
   void restore_ghost_cutoff() override {}
   Domain placement_domain() override
   {

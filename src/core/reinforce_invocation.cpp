@@ -37,7 +37,7 @@ std::vector<Particle> make_view(const AtomArrays &a, double margin, const Domain
     Particle p;
     p.x = {a.x[i][0], a.x[i][1], a.x[i][2]};
     p.r = a.radius[i];
-    p.id = a.tag[i];
+    p.id = a.id(i);
     p.role = rebar[i] ? Role::Rebar : (a.pending[i] ? Role::Target : Role::Matrix);
     p.owned = i < a.nlocal;
     p.other_rebar = !rebar[i] && (a.mask[i] & a.frozen_bits) != 0;
@@ -61,7 +61,13 @@ void plan_rounds(HostHooks &host, double write, double read, const char *stage, 
   const double cutoff = beyond + read;
   if (!std::isfinite(cutoff))
     host.fail(std::string("Fix reinforce/invert: the reach of the ") + stage + " is not finite");
-  host.ensure_ghost_cutoff(cutoff);
+  const GhostCutoff ghost = host.ensure_ghost_cutoff(cutoff);
+  if (ghost.raised) {
+    char line[160];
+    std::snprintf(line, sizeof line, "fix reinforce/invert: ghost cutoff raised from %g to %g for the %s\n",
+                  ghost.before, ghost.after, stage);
+    host.log(line);
+  }
   // The view needs no more than the cutoff past the subdomain, whatever
   // the host's ghosts hold: the results of the rounds reach this process
   // only from the processes that can change something within that
@@ -154,10 +160,10 @@ AtomRanges check_atoms(HostHooks &host, const FixOptions &options)
     if (good) out.largest = std::max(out.largest, r);
     if (a.mask[i] & a.rebar_bit) {
       rebar_count += 1;
-      if (!good && bad_rebar == 0) bad_rebar = static_cast<double>(a.tag[i]);
+      if (!good && bad_rebar == 0) bad_rebar = static_cast<double>(a.id(i));
     } else if (is_matrix(a, i)) {
       matrix_count += 1;
-      if (!good && bad_matrix == 0) bad_matrix = static_cast<double>(a.tag[i]);
+      if (!good && bad_matrix == 0) bad_matrix = static_cast<double>(a.id(i));
       out.matrix_rmin = std::min(out.matrix_rmin, r);
       out.matrix_rmax = std::max(out.matrix_rmax, r);
     }

@@ -19,7 +19,10 @@ struct AtomArrays {
   int nlocal = 0, nall = 0;
   double **x = nullptr;
   const double *radius = nullptr;
-  std::vector<std::int64_t> tag;    // atom IDs, copied (hosts have 32- or 64-bit IDs)
+  // Atom IDs as the host stores them, 32- or 64-bit: exactly one is set.
+  const int *tag32 = nullptr;
+  const std::int64_t *tag64 = nullptr;
+  std::int64_t id(int i) const { return tag64 ? tag64[i] : tag32[i]; }
   const int *mask = nullptr;
   const int *pending = nullptr;    // the fix's per-atom flag: 1 = target waiting for a place
   int group_bit = 0, rebar_bit = 0;
@@ -28,6 +31,13 @@ struct AtomArrays {
   // group bits, ORed), named in `frozen_by` for the log ("fix ID", ...).
   int frozen_bits = 0;
   std::string frozen_by;
+};
+
+// The ghost reach (the shortest over the dimensions) before and after
+// ensure_ghost_cutoff, and whether it was raised.
+struct GhostCutoff {
+  double before = 0, after = 0;
+  bool raised = false;
 };
 
 class HostHooks {
@@ -44,7 +54,7 @@ public:
 
   // Makes the ghost cutoff at least `reach` (or stops with an error that
   // names the value needed); restore_ghost_cutoff undoes a raise.
-  virtual void ensure_ghost_cutoff(double reach) = 0;
+  virtual GhostCutoff ensure_ghost_cutoff(double reach) = 0;
   virtual void restore_ghost_cutoff() = 0;
   // The box, its periodicity, this process's subdomain and view, the region.
   virtual Domain placement_domain() = 0;

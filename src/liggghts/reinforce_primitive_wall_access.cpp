@@ -5,7 +5,7 @@
 // [temp.explicit]/12), which lets this one file read the three members;
 // the trick is the same as in register_style.cpp, and nothing else in the
 // adapter reaches into PrimitiveWall.
-#include "fix_reinforce_invert.h"
+#include "reinforce_liggghts_walls.h"
 #include "primitive_wall.h"
 
 namespace {

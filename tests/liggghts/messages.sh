@@ -6,11 +6,14 @@
 #                  skipped, one WARNING; the next run (pre yes) relocates.
 #   spring_self    fix spring/self on the matrix: one WARNING naming it and
 #                  the number of atoms moved (the relocated targets).
+#   spring_self_push  the same where room is made: N = the spheres moved
+#                  (relocated or pushed, each once; check_scene).
 #   wall_unseen    fix wall/region (geometry the adapter cannot read): stops
 #                  at setup with the one ERROR line (../scripts/expect_error.sh).
 #   wall_region    the same with the region keyword: no ERROR, the log line
 #                  says the wall was not read, and the region keeps whole
 #                  spheres inside it (walls.py check).
+#   wall_rebar_only  fix wall/region on the bars alone: not read, no ERROR.
 #   walls_ignore   the same with walls ignore: no ERROR, no walls line.
 #   region_no_surface  a region without the surface distance that keeps
 #                  whole spheres inside (wedge, side out): the ERROR line.
@@ -65,6 +68,19 @@ case $case in
     read -r _ _ relocated _ _ < <(grep '^TOTALS ' "$work/log") || fail "no TOTALS line"
     [ "$relocated" -gt 0 ] || fail "nothing relocated"
     expect_warning "Fix reinforce/invert moved $relocated atoms held by fix anchor (spring/self): their anchors are still the old positions" ;;
+  spring_self_push)
+    # Radii too alike for the voids to hold the targets: room is made by
+    # pushing, and a sphere relocated and then pushed, or pushed twice,
+    # counts once: N = the spheres the checker sees moved (> relocated).
+    "$build/tests/make_scene" "$work/raw.data" --box 0 0.12 0 0.12 0 0.1 --radius 0.0045 0.005 --fcc \
+      --bar 0.0869 0.0869 0.005 0.0869 0.0869 0.095 0.011 0.015 >/dev/null
+    python3 "$here/walls.py" clip "$work/raw.data" "$work/scene.data" "${shape[@]}" >/dev/null
+    run -var hook1 "fix anchor matrix spring/self 1000" -var extra "size keep push 0.004 regrow no"
+    read -r _ _ relocated deleted _ < <(grep '^TOTALS ' "$work/log") || fail "no TOTALS line"
+    moved=$("$build/tests/check_scene" --before "$work/before.dump" --after "$work/after.dump" \
+              --deleted "$deleted" | awk '/^SUMMARY/ {for (i = 1; i < NF; i++) if ($i == "moved") print $(i + 1)}')
+    [ "${moved:-0}" -gt "$relocated" ] || fail "the checker sees ${moved:-no} spheres moved, $relocated relocated: no push"
+    expect_warning "Fix reinforce/invert moved $moved atoms held by fix anchor (spring/self): their anchors are still the old positions" ;;
   wall_unseen)
     EXPECT_EXACT=1 "$here/../scripts/expect_error.sh" "$exe" "$np" "$here/in.walls" \
       "Fix reinforce/invert cannot see the walls of fix w (wall/region): give a region that holds the matrix (region keyword: whole spheres are kept inside it) or walls ignore" \
@@ -82,6 +98,14 @@ case $case in
       "Fix reinforce/invert region 'w' (wedge, side out) has no surface distance: whole spheres cannot be kept inside it" \
       "${vars[@]}" -var extra "region w" \
       -var hook1 "region w wedge axis z center 0.06 0.06 radius 0.05 bounds 0 0.1 angle0 0 angle 90 side out units box" || exit 1 ;;
+  wall_rebar_only)
+    # A wall fix on the bars alone acts on nothing the fix moves: neither
+    # read nor refused (wall_unseen: the same on all stops the run).
+    run -var hook1 "$region" -var hook2 "${unseen/ all / rebar }"
+    line="fix reinforce/invert: walls: 1 primitive wall (zcylinder) of fix cyl, 1 primitive wall (zplane) of fix bottom"
+    grep -qxF "$line" "$work/log" || { grep 'walls:' "$work/log" || true; fail "the log does not say: $line"; }
+    [ "$(summaries)" -eq 1 ] || fail "no relocation"
+    echo "PASS: wall on the bars alone: $line" ;;
   walls_ignore)
     # Relocated spheres may now cross the cylinder (the user's risk): the
     # wall/region fix gets a region that holds them all.

@@ -12,7 +12,7 @@ cp -a "$1/src" "$1/cmake" "$work/"
 bash "$here/../../src/lammps/package/install.sh" "$work"
 cd "$work/src"
 make yes-reinforce
-for f in fix_reinforce_invert.cpp fix_reinforce_invert.h reinforce_invocation.cpp reinforce_relocation.cpp; do
+for f in fix_reinforce_invert.cpp fix_reinforce_invert.h reinforce_fix_base.cpp reinforce_fix_host.cpp reinforce_invocation.cpp reinforce_relocation.cpp; do
   [ -f "$f" ] || { echo "FAIL: make yes-reinforce did not install $f"; exit 1; }
 done
 grep -q '^PKG_INC = -std=c++17' Makefile.package || { echo "FAIL: no -std=c++17 in Makefile.package"; exit 1; }

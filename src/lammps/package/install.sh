@@ -6,7 +6,8 @@
 #   CMake:  cmake -S /path/to/lammps/cmake -B build -D PKG_REINFORCE=on ...
 #   make:   cd /path/to/lammps/src && make yes-reinforce && make mpi
 #
-# It copies the fix and the engine (src/core, no host headers) into
+# It copies the fix, the shared LAMMPS-family layer (src/host) and the
+# engine (src/core, no host headers) into
 # src/REINFORCE/, and adds REINFORCE to the package list of cmake/CMakeLists.txt
 # (LAMMPS 29Aug2024 has no other way to name a package to its CMake build).
 # The engine needs C++17, LAMMPS's own standard since 22Jul2025; for an older
@@ -24,6 +25,7 @@ tree=${1:?usage: install.sh LAMMPS_TREE (the folder holding src/ and cmake/)}
 pkg="$tree/src/REINFORCE"
 mkdir -p "$pkg"
 cp "$top/src/lammps/fix_reinforce_invert.h" "$top/src/lammps/fix_reinforce_invert.cpp" "$pkg/"
+cp "$top"/src/host/*.h "$top"/src/host/*.cpp "$pkg/"
 cp "$top"/src/core/*.h "$top"/src/core/*.cpp "$pkg/"
 cp "$here/Install.sh" "$here/README" "$pkg/"
 
