@@ -35,22 +35,20 @@ tree_of() {    # tree_of NAME PATH: prints the tree's top folder
 
 args=(-DCMAKE_BUILD_TYPE=Release -DREINFORCE_SOURCE_HOST_TESTS=ON)
 targets=(make_scene check_scene)
-if [ -n "${REINFORCE_LAMMPS_SOURCE:-}" ]; then
-  lmp=$(tree_of lammps "$REINFORCE_LAMMPS_SOURCE")
-  echo "source-built LAMMPS: $lmp"
-  args+=("-DREINFORCE_LAMMPS_SOURCE_DIR=$lmp")
-  targets+=(source_hosts_lammps)
-else
-  args+=("-DREINFORCE_LAMMPS_SOURCE_DIR=")
-fi
-if [ -n "${REINFORCE_LIGGGHTS_SOURCE:-}" ]; then
-  lig=$(tree_of liggghts "$REINFORCE_LIGGGHTS_SOURCE")
-  echo "source-built LIGGGHTS: $lig"
-  args+=("-DREINFORCE_LIGGGHTS_SOURCE_DIR=$lig")
-  targets+=(source_hosts_liggghts)
-else
-  args+=("-DREINFORCE_LIGGGHTS_SOURCE_DIR=")
-fi
+# host NAME CMAKE_NAME LABEL: the tree named by REINFORCE_<CMAKE_NAME>_SOURCE, if any.
+host() {
+  local name=$1 var=REINFORCE_$2_SOURCE tree
+  if [ -n "${!var:-}" ]; then
+    tree=$(tree_of "$name" "${!var}") || exit 1
+    echo "source-built $3: $tree"
+    args+=("-DREINFORCE_$2_SOURCE_DIR=$tree")
+    targets+=("source_hosts_$name")
+  else
+    args+=("-DREINFORCE_$2_SOURCE_DIR=")
+  fi
+}
+host lammps LAMMPS LAMMPS
+host liggghts LIGGGHTS LIGGGHTS
 cmake -S "$top" -B "$build" "${args[@]}" >"$build/configure.log" 2>&1 ||
   { tail -30 "$build/configure.log"; echo "prepare.sh: configure failed ($build/configure.log)"; exit 1; }
 start=$(date +%s)
