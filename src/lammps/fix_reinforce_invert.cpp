@@ -42,15 +42,27 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <limits>
 #include <string>
+#include <type_traits>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
 namespace {
+
+// The host's atom IDs as the engine reads them, in place (tagint is int or
+// int64_t, by the host's build).
+template <class Tag> void set_ids(reinforce::AtomArrays &a, const Tag *tag)
+{
+  constexpr bool narrow = std::is_same<Tag, int>::value;
+  static_assert(narrow || std::is_same<Tag, std::int64_t>::value, "tagint: int or int64_t");
+  a.tag32 = narrow ? reinterpret_cast<const int *>(tag) : nullptr;
+  a.tag64 = narrow ? nullptr : reinterpret_cast<const std::int64_t *>(tag);
+}
 
 // Marks of the per-atom pending flag.
 constexpr int kPresent = 0;    // not waiting (rebar, matrix, relocated, kept)
@@ -95,7 +107,7 @@ std::string format_count(double v)
   return text;
 }
 
-std::string format_length(double v)
+[[maybe_unused]] std::string format_length(double v)
 {
   char text[32];
   std::snprintf(text, sizeof text, "%.6g", v);
@@ -174,7 +186,7 @@ public:
     a.nall = atom->nlocal + atom->nghost;
     a.x = atom->x;
     a.radius = atom->radius;
-    a.tag.assign(atom->tag, atom->tag + a.nall);
+    set_ids(a, atom->tag);
     a.mask = atom->mask;
     a.pending = f.pending.data();
     a.group_bit = f.groupbit;
@@ -199,18 +211,17 @@ public:
 #endif
   }
 
-  void ensure_ghost_cutoff(double reach) override
+  reinforce::GhostCutoff ensure_ghost_cutoff(double reach) override
   {
     const double before = std::min({f.comm->cutghost[0], f.comm->cutghost[1], f.comm->cutghost[2]});
-    if (before >= reach) return;
+    if (before >= reach) return {before, before, false};
     // A second raise (the regrowth) restores the user's value too.
     if (!raised) saved_cutghostuser = f.comm->cutghostuser;
     f.comm->cutghostuser = reach;
     raised = true;
     refresh();    // comm->setup() with the new cutoff, then the ghosts again
     const double after = std::min({f.comm->cutghost[0], f.comm->cutghost[1], f.comm->cutghost[2]});
-    log("fix reinforce/invert: ghost cutoff raised from " + format_length(before) + " to " +
-        format_length(after) + " for relocation\n");
+    return {before, after, true};
   }
 
   void restore_ghost_cutoff() override

@@ -21,13 +21,25 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <type_traits>
 
 using namespace LAMMPS_NS;
 
 namespace {
+
+// The host's atom IDs as the engine reads them, in place (tagint is int or
+// int64_t, by the host's build).
+template <class Tag> void set_ids(reinforce::AtomArrays &a, const Tag *tag)
+{
+  constexpr bool narrow = std::is_same<Tag, int>::value;
+  static_assert(narrow || std::is_same<Tag, std::int64_t>::value, "tagint: int or int64_t");
+  a.tag32 = narrow ? reinterpret_cast<const int *>(tag) : nullptr;
+  a.tag64 = narrow ? nullptr : reinterpret_cast<const std::int64_t *>(tag);
+}
 
 // Comm keeps style and bordergroup protected. A class derived from it may
 // name them through a pointer to member; no object of this class is made.
@@ -465,7 +477,7 @@ public:
     a.nall = atom->nlocal + atom->nghost;
     a.x = atom->x;
     a.radius = atom->radius;
-    a.tag.assign(atom->tag, atom->tag + a.nall);
+    set_ids(a, atom->tag);
     a.mask = atom->mask;
     a.pending = f.pending_;
     a.group_bit = f.groupbit;
@@ -487,19 +499,15 @@ public:
 
   void forward_pending() override { f.comm->forward_comm_fix(&f); }
 
-  void ensure_ghost_cutoff(double reach) override
+  reinforce::GhostCutoff ensure_ghost_cutoff(double reach) override
   {
     const double have = std::min({f.ghost_reach(0), f.ghost_reach(1), f.ghost_reach(2)});
-    if (have >= reach) return;
+    if (have >= reach) return {have, have, false};
     // A second raise (the regrowth) restores the user's value too.
     if (user_cutghost < 0) user_cutghost = f.comm->cutghostuser;
     f.comm->cutghostuser = f.granular_ghosts() ? 2 * reach : reach;
     refresh();
-    char line[200];
-    std::snprintf(line, sizeof line,
-                  "fix reinforce/invert: ghost cutoff raised from %g to %g for the relocation\n",
-                  have, reach);
-    log(line);
+    return {have, reach, true};
   }
 
   void restore_ghost_cutoff() override

@@ -5,7 +5,8 @@
 # given the log of the run and that of its 1-process reference run.
 #   raised  the scene needs more ghosts than the cutoff gives: at least one
 #           line, and every one exactly
-#             fix reinforce/invert: ghost cutoff raised from A to B for relocation
+#             fix reinforce/invert: ghost cutoff raised from A to B for the STAGE
+#           (STAGE: relocation or regrowth)
 #           with B > A (a raise that took no effect, or lowered it, fails);
 #   kept    the cutoff already reaches far enough (a large comm_modify
 #           cutoff): no such line, the fix leaves the cutoff alone.
@@ -24,7 +25,7 @@ for ((i = 0; i < n; i++)); do
       if [ "$count" -eq 0 ]; then
         echo "FAIL: ghost cutoff: the scene needs a raise, $log has no 'ghost cutoff raised' line"; fail=1
       elif ! awk '{
-            if (!match($0, /^fix reinforce\/invert: ghost cutoff raised from [-+0-9.eE]+ to [-+0-9.eE]+ for relocation$/)) {
+            if (!match($0, /^fix reinforce\/invert: ghost cutoff raised from [-+0-9.eE]+ to [-+0-9.eE]+ for the (relocation|regrowth)$/)) {
               print "FAIL: ghost cutoff: not the fix'"'"'s line: " $0; bad = 1; next
             }
             a = $7 + 0; b = $9 + 0
