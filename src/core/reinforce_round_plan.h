@@ -1,6 +1,6 @@
 // Where a stage's rounds run: the block lattice its reach needs, the ghost
 // cutoff raised on the host to match, this process's view bounds and its
-// partners (docs/design.md, "Rounds").
+// partners (docs/design.md, "Parallel rules").
 #pragma once
 
 #include "reinforce_domain.h"
