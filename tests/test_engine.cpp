@@ -1,6 +1,7 @@
 // Engine tests on synthetic scenes: a jittered polydisperse packing with a
 // bar of overlapping spheres through it, seen by one process.
 #include "reinforce_cell_grid.h"
+#include "reinforce_packing_scan.h"
 #include "reinforce_relocation.h"
 
 #include <gtest/gtest.h>

@@ -152,6 +152,37 @@ double worst_matrix_overlap(const MemoryHost &h)
 
 }    // namespace
 
+// A raised ghost cutoff is logged by the core, in one wording for both
+// hosts, naming the stage that asked for it; a kept one is not logged
+// (RelocatesDeletesAndReports).
+TEST(Invocation, LogsARaisedGhostCutoff)
+{
+  struct RaisingHost : MemoryHost {
+    std::vector<GhostCutoff> raises;
+    GhostCutoff ensure_ghost_cutoff(double reach) override
+    {
+      MemoryHost::ensure_ghost_cutoff(reach);
+      raises.push_back({reach / 2, reach, true});
+      return raises.back();
+    }
+  } h;
+  fill(h, 1);
+  run_invocation(h, parse_fix_arguments({"0", "bars"}));
+  std::vector<std::string> said;
+  for (const std::string &line : h.logged)
+    if (line.find("ghost cutoff") != std::string::npos) said.push_back(line);
+  ASSERT_GE(h.raises.size(), 1u);
+  ASSERT_EQ(said.size(), h.raises.size());
+  for (std::size_t k = 0; k < said.size(); ++k) {
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "fix reinforce/invert: ghost cutoff raised from %g to %g for the %s\n",
+                  h.raises[k].before, h.raises[k].after, k == 0 ? "relocation" : "regrowth");
+    EXPECT_EQ(said[k], line);
+  }
+  EXPECT_EQ(h.logged.front(), said.front());
+}
+
 TEST(Invocation, RelocatesDeletesAndReports)
 {
   MemoryHost h;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "reinforce_relocation.h"
+#include "reinforce_settings.h"
 
 #include <stdexcept>
 #include <string>

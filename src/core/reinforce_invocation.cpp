@@ -1,8 +1,11 @@
 #include "reinforce_invocation.h"
 
-#include "reinforce_invocation_phases.h"
-
+#include "reinforce_packing_scan.h"
+#include "reinforce_relocation.h"
+#include "reinforce_round_plan.h"
 #include "reinforce_round_runner.h"
+#include "reinforce_run_stages.h"
+#include "reinforce_view.h"
 
 #include <algorithm>
 #include <array>
@@ -11,74 +14,6 @@
 #include <unordered_map>
 
 namespace reinforce {
-
-// The engine's view of the atoms that can matter: those within `margin` of
-// a rebar sphere and inside the domain's view bounds. Every atom is an
-// obstacle; pending ones are vacant; only matrix atoms of the fix group are
-// pushed.
-std::vector<Particle> make_view(const AtomArrays &a, double margin, const Domain &domain,
-                                std::vector<int> &local)
-{
-  std::vector<unsigned char> rebar(a.nall);
-  for (int i = 0; i < a.nall; ++i) rebar[i] = (a.mask[i] & a.rebar_bit) != 0;
-  local = spheres_near_rebar(a.nall, a.x, a.radius, rebar.data(), margin);
-  local.erase(
-      std::remove_if(local.begin(), local.end(),
-                     [&](int i) {
-                       for (int d = 0; d < 3; ++d)
-                         if (!(a.x[i][d] >= domain.view_lo[d] && a.x[i][d] <= domain.view_hi[d]))
-                           return true;
-                       return false;
-                     }),
-      local.end());
-  std::vector<Particle> view;
-  view.reserve(local.size());
-  for (int i : local) {
-    Particle p;
-    p.x = {a.x[i][0], a.x[i][1], a.x[i][2]};
-    p.r = a.radius[i];
-    p.id = a.id(i);
-    p.role = rebar[i] ? Role::Rebar : (a.pending[i] ? Role::Target : Role::Matrix);
-    p.owned = i < a.nlocal;
-    p.other_rebar = !rebar[i] && (a.mask[i] & a.frozen_bits) != 0;
-    p.pushable = (a.mask[i] & a.group_bit) != 0 && !p.other_rebar;
-    view.push_back(p);
-  }
-  return view;
-}
-
-// The lattice for a stage whose unit of work writes within `write` and
-// reads within `read` of its particle, the ghost reach that needs (raised
-// on the host), this process's view bounds and its partners.
-void plan_rounds(HostHooks &host, double write, double read, const char *stage, Plan &plan)
-{
-  const Domain &box = plan.box;
-  plan.lattice = make_block_lattice(box.lo, box.hi, box.periodic, write + read);
-  // The owner of a block's centre sees the whole block plus the read
-  // reach: how far a block reaches past a subdomain depends on where the
-  // subdomain's faces fall on the lattice, so the largest over processes.
-  const double beyond = host.max(plan.lattice.reach_beyond(box.sub_lo, box.sub_hi));
-  const double cutoff = beyond + read;
-  if (!std::isfinite(cutoff))
-    host.fail(std::string("Fix reinforce/invert: the reach of the ") + stage + " is not finite");
-  const GhostCutoff ghost = host.ensure_ghost_cutoff(cutoff);
-  if (ghost.raised) {
-    char line[160];
-    std::snprintf(line, sizeof line, "fix reinforce/invert: ghost cutoff raised from %g to %g for the %s\n",
-                  ghost.before, ghost.after, stage);
-    host.log(line);
-  }
-  // The view needs no more than the cutoff past the subdomain, whatever
-  // the host's ghosts hold: the results of the rounds reach this process
-  // only from the processes that can change something within that
-  // (exchange_partners).
-  plan.domain = host.placement_domain();
-  for (int d = 0; d < 3; ++d) {
-    plan.domain.view_lo[d] = std::max(plan.domain.view_lo[d], plan.domain.sub_lo[d] - cutoff);
-    plan.domain.view_hi[d] = std::min(plan.domain.view_hi[d], plan.domain.sub_hi[d] + cutoff);
-  }
-  plan.partners = exchange_partners(host, plan.domain, beyond, write, cutoff);
-}
 
 namespace {
 

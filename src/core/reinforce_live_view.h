@@ -3,7 +3,8 @@
 #pragma once
 
 #include "reinforce_cell_grid.h"
-#include "reinforce_relocation.h"
+#include "reinforce_domain.h"
+#include "reinforce_particle.h"
 #include "reinforce_round_records.h"
 
 #include <algorithm>

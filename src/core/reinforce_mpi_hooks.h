@@ -3,7 +3,7 @@
 // made of it alone (MpiHooks), which both adapters' hosts derive from.
 #pragma once
 
-#include "reinforce_invocation.h"
+#include "reinforce_host_hooks.h"
 
 #include <mpi.h>
 

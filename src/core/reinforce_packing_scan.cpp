@@ -1,8 +1,9 @@
 // Passes over a host's atoms or a process's view before the relocation:
 // the spheres near the bars, the targets, the overlaps the packing already
-// has (declared in reinforce_relocation.h).
+// has.
+#include "reinforce_packing_scan.h"
+
 #include "reinforce_cell_grid.h"
-#include "reinforce_relocation.h"
 
 #include <algorithm>
 #include <cmath>

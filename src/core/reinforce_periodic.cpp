@@ -1,11 +1,22 @@
-// Periodic geometry of the placement domain: wrapping a centre into the
-// box and the images of a sphere a process's view holds, as the host's own
-// ghosts would be (declared in reinforce_relocation.h).
-#include "reinforce_relocation.h"
+// Geometry of the placement domain: what it admits, wrapping a centre into
+// the box and the images of a sphere a process's view holds, as the host's
+// own ghosts would be (declared in reinforce_domain.h).
+#include "reinforce_domain.h"
 
 #include <cmath>
 
 namespace reinforce {
+
+bool admissible(Vec3 from, Vec3 c, double r, const Domain &domain, double tol)
+{
+  if (!is_finite(c) || !std::isfinite(r)) return false;
+  // The box faces as before: a new sphere wholly inside them.
+  for (int d = 0; d < 3; ++d)
+    if (!domain.periodic[d] && (c[d] - r < domain.lo[d] || c[d] + r > domain.hi[d])) return false;
+  const double inner = r * (1 - tol);
+  if (domain.region && !domain.region(wrapped_into_box(c, domain), inner)) return false;
+  return !domain.walls || domain.walls->admits(from, c, r, tol);
+}
 
 bool in_box(Vec3 x, const Domain &d)
 {

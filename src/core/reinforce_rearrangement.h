@@ -4,7 +4,10 @@
 // "Making room").
 #pragma once
 
+#include "reinforce_domain.h"
+#include "reinforce_relocation.h"
 #include "reinforce_scene.h"
+#include "reinforce_settings.h"
 
 #include <cstdint>
 #include <map>

@@ -11,7 +11,9 @@
 // where that fails.
 #pragma once
 
-#include "reinforce_relocation.h"
+#include "reinforce_domain.h"
+#include "reinforce_particle.h"
+#include "reinforce_settings.h"
 #include "reinforce_round_records.h"
 
 #include <cstdint>

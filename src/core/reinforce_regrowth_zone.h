@@ -4,7 +4,7 @@
 // and its soft-sphere relaxation (reinforce_soft_relaxation.cpp).
 #pragma once
 
-#include "reinforce_relocation.h"
+#include "reinforce_particle.h"
 #include "reinforce_vec3.h"
 
 #include <cstdint>

@@ -106,22 +106,6 @@ Footprint footprint(const Settings &s, double target_rmax, double largest_r)
   return f;
 }
 
-bool spheres_overlap(Vec3 a, double ra, Vec3 b, double rb, double tol)
-{
-  return ra + rb - norm(a - b) > tol * std::min(ra, rb);
-}
-
-bool admissible(Vec3 from, Vec3 c, double r, const Domain &domain, double tol)
-{
-  if (!is_finite(c) || !std::isfinite(r)) return false;
-  // The box faces as before: a new sphere wholly inside them.
-  for (int d = 0; d < 3; ++d)
-    if (!domain.periodic[d] && (c[d] - r < domain.lo[d] || c[d] + r > domain.hi[d])) return false;
-  const double inner = r * (1 - tol);
-  if (domain.region && !domain.region(wrapped_into_box(c, domain), inner)) return false;
-  return !domain.walls || domain.walls->admits(from, c, r, tol);
-}
-
 namespace {
 
 // The particles that can matter to the targets picked by `mine`: those

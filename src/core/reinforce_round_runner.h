@@ -4,7 +4,9 @@
 // apply it to their views; the owners apply it to the host's atoms.
 #pragma once
 
-#include "reinforce_invocation.h"
+#include "reinforce_domain.h"
+#include "reinforce_host_hooks.h"
+#include "reinforce_particle.h"
 #include "reinforce_schedule.h"
 #include "reinforce_stage.h"
 

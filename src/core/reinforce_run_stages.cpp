@@ -1,8 +1,11 @@
-#include "reinforce_invocation_phases.h"
+#include "reinforce_run_stages.h"
 
 #include "reinforce_regrowth_stage.h"
+#include "reinforce_relocation.h"
 #include "reinforce_relocation_stage.h"
+#include "reinforce_round_records.h"
 #include "reinforce_round_runner.h"
+#include "reinforce_view.h"
 
 #include <algorithm>
 #include <cstdio>

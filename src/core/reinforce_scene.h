@@ -5,7 +5,7 @@
 
 #include "reinforce_candidate_order.h"
 #include "reinforce_cell_grid.h"
-#include "reinforce_relocation.h"
+#include "reinforce_particle.h"
 
 #include <algorithm>
 #include <cmath>

@@ -6,8 +6,8 @@
 // checked (or projected out) by the caller.
 #pragma once
 
+#include "reinforce_domain.h"
 #include "reinforce_regrowth_zone.h"
-#include "reinforce_relocation.h"
 
 #include <cstdint>
 #include <vector>

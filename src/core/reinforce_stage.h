@@ -7,6 +7,7 @@
 // the first stage.
 #pragma once
 
+#include "reinforce_particle.h"
 #include "reinforce_round_records.h"
 
 #include <cstddef>

@@ -5,7 +5,8 @@
 # given the log of the run and that of its 1-process reference run.
 #   raised  the scene needs more ghosts than the cutoff gives: at least one
 #           line, and every one exactly
-#             fix reinforce/invert: ghost cutoff raised from A to B for the relocation (or: for the regrowth)
+#             fix reinforce/invert: ghost cutoff raised from A to B for the STAGE
+#           (STAGE: relocation or regrowth)
 #           with B > A (a raise that took no effect, or lowered it, fails);
 #   kept    the cutoff already reaches far enough (a large comm_modify
 #           cutoff): no such line, the fix leaves the cutoff alone.
