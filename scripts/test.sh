@@ -125,8 +125,10 @@ for ((k = 0; k < ${#host_exe[@]}; k += 2)); do
   if [ -n "$why" ]; then
     skipped+=("$h tests (skipped on purpose: $why)")
     exclude+=("^${h}_")
-    # the stability tests and the benchmark's quick case run lmp_reinforce too
-    [ "$h" = lammps ] && exclude+=("^stability_" "^bench_quick$")
+    # the stability and quality tests, the benchmark's quick case and the
+    # LIGGGHTS-against-LAMMPS comparisons run lmp_reinforce too (their
+    # families in test_families.txt name the host lammps)
+    [ "$h" = lammps ] && exclude+=("^stability_" "^bench_quick$" "^quality_" "^liggghts_same_stats_as_lammps")
     continue
   fi
   H=$(upper "$h")

@@ -245,7 +245,8 @@ TEST(FixOptions, WallsErrorsNameTheProblem)
   EXPECT_EQ(error_of({"0", "bars", "wall", "ignore"}), I + "unknown keyword 'wall'");
   // An error after it is still reported.
   EXPECT_EQ(error_of({"0", "bars", "walls", "ignore", "tries", "0"}), I + "tries must be > 0");
-  EXPECT_THROW(parse_fix_arguments({"0", "bars", "walls", "maybe"}), OptionError);
+  EXPECT_EQ(error_of({"0", "bars", "walls", "maybe"}),
+            I + "walls must be 'check' or 'ignore', got 'maybe'");
 }
 
 // regrow: on by default with size keep (3 matrix radii), not with size fit
@@ -297,8 +298,16 @@ TEST(FixOptions, RegrowWidthOrNo)
 TEST(FixOptions, ImpossibleRadiusRangeFromScene)
 {
   const FixOptions o = parse_fix_arguments({"0", "bars"});
-  EXPECT_THROW(make_settings(o, 0.0, 0.0, 1), OptionError);    // empty matrix
-  EXPECT_THROW(make_settings(o, 0.3, 0.1, 1), OptionError);
+  const auto settings_error = [&o](double rmin, double rmax) -> std::string {
+    try {
+      make_settings(o, rmin, rmax, 1);
+    } catch (const OptionError &e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_EQ(settings_error(0.0, 0.0), "Fix reinforce/invert: impossible radius range [0, 0]");    // empty matrix
+  EXPECT_EQ(settings_error(0.3, 0.1), "Fix reinforce/invert: impossible radius range [0.3, 0.1]");
 }
 
 // Blocks of one colour never touch (including across a periodic

@@ -183,6 +183,18 @@ TEST(Invocation, LogsARaisedGhostCutoff)
   EXPECT_EQ(h.logged.front(), said.front());
 }
 
+// The message of the error an invocation stops with ("" when none): the
+// exact text, so that a wrong error cannot pass for the right one.
+static std::string failure_of(MemoryHost &h, const std::vector<std::string> &args)
+{
+  try {
+    run_invocation(h, parse_fix_arguments(args));
+  } catch (const std::runtime_error &e) {
+    return e.what();
+  }
+  return "";
+}
+
 TEST(Invocation, RelocatesDeletesAndReports)
 {
   MemoryHost h;
@@ -276,7 +288,8 @@ TEST(Invocation, ImpossibleRadiusRangeFromSceneIsAnError)
   h.add({0.5, 0.5, 0.5}, 0.05, kGroup | kRebar);
   h.add({0.2, 0.2, 0.2}, 0.0, kGroup);    // a matrix sphere of radius 0
   h.add({0.2, 0.5, 0.2}, 0.1, kGroup);
-  EXPECT_THROW(run_invocation(h, parse_fix_arguments({"0", "bars"})), std::runtime_error);
+  EXPECT_EQ(failure_of(h, {"0", "bars"}),
+            "Fix reinforce/invert: matrix atom 2 has radius 0; matrix spheres need a radius > 0");
 }
 
 // Matrix spheres that already overlap each other near a bar: the fix leaves
@@ -313,7 +326,8 @@ TEST(Invocation, ZeroRadiusMatrixIsAnError)
   MemoryHost h;
   h.add({0.5, 0.5, 0.5}, 0.05, kGroup | kRebar);
   h.add({0.52, 0.5, 0.5}, 0.0, kGroup);
-  EXPECT_THROW(run_invocation(h, parse_fix_arguments({"0", "bars"})), std::runtime_error);
+  EXPECT_EQ(failure_of(h, {"0", "bars"}),
+            "Fix reinforce/invert: matrix atom 2 has radius 0; matrix spheres need a radius > 0");
 }
 
 // No matrix sphere at all: nothing to do, zero totals, one log line.

@@ -29,19 +29,29 @@ walls_bars=(--bar 0.005 0.07 0.07 0.175 0.07 0.07 0.005 0.0075
 periodic_bars=(--bar 0.00375 0.07 0.07 0.17625 0.07 0.07 0.005 0.0075
                --bar 0.00375 0.035 0.035 0.17625 0.035 0.035 0.005 0.0075
                --bar 0.09 0.00375 0.105 0.09 0.13625 0.105 0.005 0.0075)
-# 200 thin fibres (chains of 1 mm spheres, 1.5 mm apart, 30 mm long), their
-# centres and directions from a fixed pseudo-random sequence, each wholly
-# inside the box.
-mapfile -t fibre_bars < <(awk 'BEGIN {
-  s = 12345; pi = 3.141592653589793
-  for (f = 0; f < 200; f++) {
-    for (d = 0; d < 5; d++) { s = (s * 1103515245 + 12345) % 2147483648; u[d] = s / 2147483648 }
-    cx = 0.02 + u[0] * 0.14; cy = 0.02 + u[1] * 0.10; cz = 0.02 + u[2] * 0.10
-    ct = 2 * u[3] - 1; st = sqrt(1 - ct * ct); ph = 2 * pi * u[4]
-    dx = 0.015 * st * cos(ph); dy = 0.015 * st * sin(ph); dz = 0.015 * ct
-    printf "--bar\n%.6f\n%.6f\n%.6f\n%.6f\n%.6f\n%.6f\n0.001\n0.0015\n", cx - dx, cy - dy, cz - dz, cx + dx, cy + dy, cz + dz
-  }
-}')
+# fibre_bars N LX LY LZ: N thin fibres (chains of 1 mm spheres, 1.5 mm
+# apart, 30 mm long) in a box LX x LY x LZ, their centres and directions
+# from a fixed pseudo-random sequence, each wholly inside the box (centres
+# at least 20 mm from each face).
+fibre_bars() {
+  awk -v n="$1" -v lx="$2" -v ly="$3" -v lz="$4" 'BEGIN {
+    s = 12345; pi = 3.141592653589793
+    for (f = 0; f < n; f++) {
+      for (d = 0; d < 5; d++) { s = (s * 1103515245 + 12345) % 2147483648; u[d] = s / 2147483648 }
+      cx = 0.02 + u[0] * (lx - 0.04); cy = 0.02 + u[1] * (ly - 0.04); cz = 0.02 + u[2] * (lz - 0.04)
+      ct = 2 * u[3] - 1; st = sqrt(1 - ct * ct); ph = 2 * pi * u[4]
+      dx = 0.015 * st * cos(ph); dy = 0.015 * st * sin(ph); dz = 0.015 * ct
+      printf "--bar\n%.6f\n%.6f\n%.6f\n%.6f\n%.6f\n%.6f\n0.001\n0.0015\n", cx - dx, cy - dy, cz - dz, cx + dx, cy + dy, cz + dz
+    }
+  }'
+}
+# fibres: 200 fibres in the whole box (the benchmark's scene, bench/run.sh).
+mapfile -t fibre_bars < <(fibre_bars 200 0.18 0.14 0.14)
+# fibres_small: the tests' fibre scene, the same law and fibres at about the
+# same number per volume in a box of a quarter of the volume (the
+# regrowth of the shrunk targets is most of the fibre tests' time).
+small_fibres_box=(--box 0 0.09 0 0.1 0 0.1)
+mapfile -t small_fibre_bars < <(fibre_bars 50 0.09 0.1 0.1)
 for c in "${cases[@]}"; do
   case $c in
     wide)   args=(--radius 0.0025 0.0075 --phi 0.58 --boundary f f f "${walls_bars[@]}"); bnd="f f f" ;;
@@ -49,13 +59,17 @@ for c in "${cases[@]}"; do
     dense)  args=(--radius 0.0025 0.0075 --phi 0.64 --boundary p p p "${periodic_bars[@]}"); bnd="p p p" ;;
     one)    args=(--radius 0.004 0.004 --phi 0.56 --boundary f f f "${walls_bars[@]}"); bnd="f f f" ;;
     fibres) args=(--radius 0.0025 0.0075 --phi 0.58 --boundary f f f "${fibre_bars[@]}"); bnd="f f f" ;;
+    fibres_small)
+            args=(--radius 0.0025 0.0075 --phi 0.58 --boundary f f f "${small_fibre_bars[@]}"); bnd="f f f" ;;
     *) echo "make_scenes.sh: unknown case $c"; exit 2 ;;
   esac
-  if [ -n "$print_args" ]; then printf '%s\n' "${box[@]}" "${args[@]}"; exit 0; fi
+  cbox=("${box[@]}")
+  [ "$c" = fibres_small ] && cbox=("${small_fibres_box[@]}")
+  if [ -n "$print_args" ]; then printf '%s\n' "${cbox[@]}" "${args[@]}"; exit 0; fi
   mkdir -p "$out/$c"
-  "$grow" "$out/$c/before.data" "${box[@]}" "${args[@]}" --seed 11
+  "$grow" "$out/$c/before.data" "${cbox[@]}" "${args[@]}" --seed 11
   # Around 200 thin fibres grow_packing jams (overlaps of 1.6 rmin after
   # 5 minutes): the fibre scene has no reference.
-  [ "$c" = fibres ] || "$grow" "$out/$c/ref.data" "${box[@]}" "${args[@]}" --seed 12 --around-bars
+  [[ "$c" == fibres* ]] || "$grow" "$out/$c/ref.data" "${cbox[@]}" "${args[@]}" --seed 12 --around-bars
   echo "$bnd" > "$out/$c/boundary"
 done

@@ -7,8 +7,10 @@
 # QUALITY_LMP_VARS="-var method delete -var cut 0.0125": more lmp arguments
 # (in.quality lists them). QUALITY_REMOVED_MAX=X: the removed ratio must be
 # at most X. A scene without ref.data is measured without a reference.
-# The scene's md5 (ids, types, positions, radii as written) is printed, to
-# compare process counts.
+# The scene's md5 (ids, types, positions, radii as written) is printed and,
+# with the fix's defaults (no QUALITY_LMP_VARS), written to
+# SCENES/CASE/after_npNP.md5 before the assertions: same_scene.sh --runs
+# compares those of the process counts instead of running the fix again.
 set -euo pipefail
 case=$1 np=$2 lmp=$3 check=$4 quality=$5 scenes=$6
 shift 6
@@ -21,6 +23,9 @@ dir=$scenes/$case
 reference=()
 [ -f "$dir/ref.data" ] && reference=(--reference "$dir/ref.data")
 read -r bx by bz < "$dir/boundary"
+md5_out=""
+[ -n "${QUALITY_LMP_VARS:-}" ] || md5_out=$dir/after_np$np.md5
+[ -z "$md5_out" ] || rm -f "$md5_out"    # none left from an earlier run
 . "$(dirname "${BASH_SOURCE[0]}")/../scripts/test_env.sh" "quality_${case}"
 launch=(mpirun -np "$np")
 [ "$np" -eq 1 ] && launch=()
@@ -34,7 +39,9 @@ echo "$case np=$np: targets $targets relocated $relocated deleted $deleted kept 
 grep '^fix reinforce/invert:' "$work/log" | tail -1 || true
 "$check" --before "$work/before.dump" --after "$work/after.dump" --deleted "$deleted" \
   | grep -v '^INFO' || { echo "FAIL: check_scene (above)"; exit 1; }
-echo "SCENE_MD5 $(md5sum < "$work/after.dump" | cut -c1-32)"
+sum=$(md5sum < "$work/after.dump" | cut -c1-32)
+echo "SCENE_MD5 $sum"
+[ -z "$md5_out" ] || echo "$sum" > "$md5_out"
 status=0
 "$quality" --before "$work/before.dump" --after "$work/after.dump" "${reference[@]}" \
   --boundary $bx $by $bz --quiet-profile "$@" | tee "$work/quality" || status=$?

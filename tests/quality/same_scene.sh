@@ -3,9 +3,25 @@
 # the scenes written after it must be identical (ids, types, positions and
 # radii as written, %.17g).
 #   same_scene.sh CASE LMP SCENES NP...
+#   same_scene.sh CASE --runs SCENES NP...   compares the scenes the
+#       quality tests (quality.sh CASE NP, the same defaults) wrote, from
+#       their SCENES/CASE/after_npNP.md5, without running the fix again
 set -euo pipefail
 case=$1 lmp=$2 scenes=$3
 shift 3
+if [ "$lmp" = --runs ]; then
+  first=""
+  for np in "$@"; do
+    f=$scenes/$case/after_np$np.md5
+    [ -s "$f" ] || { echo "FAIL: no scene of quality_${case}_np$np ($f): did that test run?"; exit 1; }
+    sum=$(cat "$f")
+    echo "$case np=$np: scene $sum (quality_${case}_np$np)"
+    [ -z "$first" ] && first=$sum
+    [ "$sum" = "$first" ] || { echo "FAIL: the scene at $np processes differs from the one at $1"; exit 1; }
+  done
+  echo "PASS: $case: the same scene at $* processes"
+  exit 0
+fi
 here=$(cd "$(dirname "$0")" && pwd)
 dir=$scenes/$case
 [ -f "$dir/before.data" ] || { echo "FAIL: no scene in $dir (make_scenes.sh)"; exit 1; }

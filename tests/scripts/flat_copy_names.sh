@@ -25,9 +25,18 @@ count=$(echo "$copied" | wc -l)
 bad=$(echo "$copied" | grep -vE '^(reinforce_|fix_reinforce_invert\.)' || true)
 [ -z "$bad" ] || { echo "FAIL: copied without the reinforce_ prefix: $bad"; exit 1; }
 
+# A host source named but missing or unreadable fails: a check dropped in
+# silence would pass without checking anything.
 for tarball in "$@"; do
-  [ -f "$tarball" ] || { echo "FAIL: no host tarball $tarball"; exit 1; }
-  hosts=$(tar tzf "$tarball" | grep -E '/src/' | sed 's|.*/||' | sort -u)
+  if [ -d "$tarball" ]; then    # an unpacked source tree
+    hosts=$(cd "$tarball" && find . -path '*/src/*' -type f | sed 's|.*/||' | sort -u)
+  elif [ -f "$tarball" ] && [[ "$tarball" == *.tar.gz ]]; then
+    hosts=$(tar tzf "$tarball" | grep -E '/src/' | sed 's|.*/||' | sort -u) ||
+      { echo "FAIL: cannot list host tarball $tarball"; exit 1; }
+  else
+    echo "FAIL: host source $tarball named but not found (neither a source tree nor a .tar.gz)"; exit 1
+  fi
+  [ -n "$hosts" ] || { echo "FAIL: no src/ file in host source $tarball"; exit 1; }
   clash=$(comm -12 <(echo "$copied") <(echo "$hosts") | grep -vE '^fix_reinforce_invert\.' || true)
   [ -z "$clash" ] || { echo "FAIL: $(basename "$tarball") has files named like ours: $clash"; exit 1; }
   echo "no name shared with $(basename "$tarball") ($(echo "$hosts" | wc -l) names)"

@@ -59,6 +59,7 @@ option(FAKE_LIGGGHTS "" OFF)
 option(FAKE_LIGGGHTS_FAILS "" OFF)
 option(FAKE_BROKEN "" OFF)
 option(FAKE_NO_UNIT "" OFF)
+option(FAKE_LAMMPS_USERS "" OFF)
 if(FAKE_BROKEN)
   message(FATAL_ERROR "deliberately broken configure")
 endif()
@@ -71,6 +72,13 @@ fake_exe(src/lammps/lmp_reinforce)
 add_test(NAME lammps_fake COMMAND true)
 if(NOT FAKE_NO_UNIT)
   add_test(NAME Unit.Fake COMMAND true)
+endif()
+# Tests outside lammps_ that run lmp_reinforce: failing, so that running
+# them when lammps is skipped fails the case.
+if(FAKE_LAMMPS_USERS)
+  foreach(t stability_fake bench_quick quality_fake liggghts_same_stats_as_lammps_fake)
+    add_test(NAME ${t} COMMAND false)
+  endforeach()
 endif()
 if(REINFORCE_LIGGGHTS AND FAKE_LIGGGHTS)
   fake_exe(src/liggghts/liggghts_reinforce)
@@ -167,6 +175,12 @@ expect host_present 0 "$fake" bin_ok REINFORCE_CMAKE_ARGS=-DFAKE_LIGGGHTS=ON -- 
 expect host_built_skipped 0 "$fake" bin_ok REINFORCE_SKIP=liggghts \
   "REINFORCE_CMAKE_ARGS=-DFAKE_LIGGGHTS=ON -DFAKE_LIGGGHTS_FAILS=ON" -- \
   '^total: 2 passed, 0 failed$' '!liggghts_fake'
+# Skipping lammps also leaves out the other tests that run lmp_reinforce.
+expect lammps_skipped_all_its_users 0 "$fake" bin_ok REINFORCE_SKIP=lammps \
+  "REINFORCE_CMAKE_ARGS=-DFAKE_LIGGGHTS=ON -DFAKE_LAMMPS_USERS=ON" -- \
+  '^  skipped: lammps tests \(skipped on purpose: REINFORCE_SKIP=lammps\)' \
+  '^  main: 2 tests, 2 passed, 0 failed \(liggghts 1, unit 1\)' '^total: 2 passed, 0 failed$' \
+  '!(stability|quality|liggghts_same_stats_as_lammps)_fake|bench_quick'
 # 3. A family of tests short of its minimum fails the command, named (the
 # fake's unit test not registered; liggghts skipped, so that nothing else
 # fails).
