@@ -13,6 +13,9 @@
 #   wall_region    the same with the region keyword: no ERROR, the log line
 #                  says the wall was not read, and the region keeps whole
 #                  spheres inside it (walls.py check).
+#   two_bars       two fixes on group all, one per crossing bar (in.two_bars):
+#                  both bars untouched (check_scene --rebar-type 2,3), each
+#                  fix logs that it left the other's bar alone.
 #   wall_rebar_only  fix wall/region on the bars alone: not read, no ERROR.
 #   walls_ignore   the same with walls ignore: no ERROR, no walls line.
 #   region_no_surface  a region without the surface distance that keeps
@@ -106,6 +109,29 @@ case $case in
     grep -qxF "$line" "$work/log" || { grep 'walls:' "$work/log" || true; fail "the log does not say: $line"; }
     [ "$(summaries)" -eq 1 ] || fail "no relocation"
     echo "PASS: wall on the bars alone: $line" ;;
+  two_bars)
+    # Two fixes on group all, one per crossing bar (in.two_bars): neither
+    # moves the other's bar, and each says it left it alone.
+    "$build/tests/make_scene" "$work/raw.data" --box 0 0.2 0 0.2 0 0.2 --radius 0.004 0.008 --fcc \
+      --bar 0.01 0.1 0.1 0.19 0.1 0.1 0.005 0.0075 --bar 0.1 0.01 0.105 0.1 0.19 0.105 0.005 0.0075 >/dev/null
+    sed 's/^2 atom types$/3 atom types/' "$work/raw.data" >"$work/scene.data"    # LIGGGHTS has no extra/atom/types
+    launch=(mpirun -np "$np")
+    [ "$np" -eq 1 ] && launch=()
+    (cd "$here" && "${launch[@]}" "$exe" -in in.two_bars -log "$work/log" -screen /dev/null \
+       -var data "$work/scene.data" -var out "$work") || { grep '^ERROR' "$work/log" || tail -5 "$work/log"; fail "$exe exited non-zero"; }
+    value() { awk -v w="$1" '$1 == w {$1 = ""; v = $0} END {print v}' "$work/log"; }
+    read -r b1 b2 <<<"$(value BARS)"
+    { [ "$b1" -gt 0 ] && [ "$b2" -gt 0 ]; } || fail "bars of $b1 and $b2 spheres"
+    read -r _ r1 d1 <<<"$(value TOTALS1)"
+    read -r _ r2 d2 <<<"$(value TOTALS2)"
+    { [ "$r1" -gt 0 ] && [ "$r2" -gt 0 ]; } || fail "each fix must relocate targets of its bar ($r1, $r2)"
+    "$build/tests/check_scene" --before "$work/before.dump" --after "$work/after.dump" --rebar-type 2,3 \
+      --deleted $((d1 + d2)) || fail "the checker failed (above)"
+    for other in r2 r1; do
+      line=$(grep -E "^fix reinforce/invert: left alone [0-9]+ atoms that overlap the bars: they are rebar of fix $other\$" "$work/log" || true)
+      { [ -n "$line" ] && [ "$(grep -c . <<<"$line")" -eq 1 ]; } || { grep 'left alone' "$work/log" || true; fail "no (or several) line: left alone N atoms ... rebar of fix $other"; }
+      echo "PASS: $line"
+    done ;;
   walls_ignore)
     # Relocated spheres may now cross the cylinder (the user's risk): the
     # wall/region fix gets a region that holds them all.
