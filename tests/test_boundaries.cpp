@@ -3,6 +3,7 @@
 // states the tolerance it asserts and why; degenerate and extreme inputs
 // are covered, and no NaN or infinity may come out of finite inputs.
 #include "reinforce_boundaries.h"
+#include "tools/vec3.h"
 
 #include <gtest/gtest.h>
 
@@ -21,51 +22,26 @@ namespace {
 constexpr double kTol = 1e-6;    // the fix's default `tol`
 
 // ---------------------------------------------------------------------------
-// Independent references, in long double, sharing no code with
+// Independent references, in long double (vector arithmetic shared with
+// check_scene only: tools/vec3.h), sharing no code with
 // reinforce_boundaries.cpp (none of its formulas either: Gram systems and signed
 // volumes where it uses projections and cross products with the normal).
 
 using LD = long double;
-struct V {
-  LD x, y, z;
-};
+using V = tools::Vec<LD>;
 V ld(Vec3 a)
 {
   return {a.x, a.y, a.z};
-}
-V operator+(V a, V b)
-{
-  return {a.x + b.x, a.y + b.y, a.z + b.z};
-}
-V operator-(V a, V b)
-{
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-V operator*(LD s, V a)
-{
-  return {s * a.x, s * a.y, s * a.z};
-}
-LD dotl(V a, V b)
-{
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-V crossl(V a, V b)
-{
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-LD norml(V a)
-{
-  return std::sqrt(dotl(a, a));
 }
 
 LD ref_segment(V x, V a, V b)
 {
   const V ab = b - a;
-  const LD len2 = dotl(ab, ab);
-  LD t = len2 > 0 ? dotl(x - a, ab) / len2 : 0;
+  const LD len2 = dot(ab, ab);
+  LD t = len2 > 0 ? dot(x - a, ab) / len2 : 0;
   if (t < 0) t = 0;
   if (t > 1) t = 1;
-  return norml(x - (a + t * ab));
+  return norm(x - (a + t * ab));
 }
 
 // Exact distance to the triangle: the foot of x from the 2x2 Gram system
@@ -74,13 +50,13 @@ LD ref_triangle(Vec3 xd, const Triangle &t)
 {
   const V x = ld(xd), a = ld(t.a), b = ld(t.b), c = ld(t.c);
   const V e0 = b - a, e1 = c - a, d = x - a;
-  const LD g00 = dotl(e0, e0), g01 = dotl(e0, e1), g11 = dotl(e1, e1);
+  const LD g00 = dot(e0, e0), g01 = dot(e0, e1), g11 = dot(e1, e1);
   const LD det = g00 * g11 - g01 * g01;
   LD best = std::min({ref_segment(x, a, b), ref_segment(x, b, c), ref_segment(x, c, a)});
   if (det > 1e-30L * g00 * g11) {
-    const LD r0 = dotl(d, e0), r1 = dotl(d, e1);
+    const LD r0 = dot(d, e0), r1 = dot(d, e1);
     const LD s = (g11 * r0 - g01 * r1) / det, u = (g00 * r1 - g01 * r0) / det;
-    if (s >= 0 && u >= 0 && s + u <= 1) best = std::min(best, norml(d - s * e0 - u * e1));
+    if (s >= 0 && u >= 0 && s + u <= 1) best = std::min(best, norm(d - s * e0 - u * e1));
   }
   return best;
 }
@@ -112,7 +88,7 @@ template <class F> LD golden_min(F &&f, LD lo, LD hi)
 LD convex_search_triangle(Vec3 xd, const Triangle &t)
 {
   const V x = ld(xd), a = ld(t.a), e0 = ld(t.b) - ld(t.a), e1 = ld(t.c) - ld(t.a);
-  auto at = [&](LD u, LD v) { return norml(x - (a + u * e0 + v * e1)); };
+  auto at = [&](LD u, LD v) { return norm(x - (a + u * e0 + v * e1)); };
   return golden_min([&](LD u) { return golden_min([&](LD v) { return at(u, v); }, 0, 1 - u); }, 0,
                     1);
 }
@@ -127,7 +103,7 @@ double sampled_triangle(Vec3 x, const Triangle &t, int n)
     for (int j = 0; i + j <= n; ++j) {
       const V p = a + (LD(i) / n) * e0 + (LD(j) / n) * e1;
       const V d = xl - p;
-      best = std::min(best, dotl(d, d));
+      best = std::min(best, dot(d, d));
     }
   return static_cast<double>(std::sqrt(best));
 }
@@ -146,11 +122,11 @@ double max_edge(const Triangle &t)
 bool ref_crosses(Vec3 pd, Vec3 qd, const Triangle &t, bool *borderline)
 {
   const V p = ld(pd), q = ld(qd), a = ld(t.a), b = ld(t.b), c = ld(t.c);
-  const V n = crossl(b - a, c - a);
-  const LD nn = norml(n);
+  const V n = cross(b - a, c - a);
+  const LD nn = norm(n);
   if (nn == 0) return false;
-  const LD size = std::max({norml(b - a), norml(c - a), norml(c - b)});
-  const LD hp = dotl(p - a, n) / nn, hq = dotl(q - a, n) / nn;
+  const LD size = std::max({norm(b - a), norm(c - a), norm(c - b)});
+  const LD hp = dot(p - a, n) / nn, hq = dot(q - a, n) / nn;
   const LD eps = 1e-9L * size;
   if ((std::fabs(hp) < eps && ref_triangle(pd, t) < 1e-6 * size) ||
       (std::fabs(hq) < eps && ref_triangle(qd, t) < 1e-6 * size))
@@ -158,9 +134,9 @@ bool ref_crosses(Vec3 pd, Vec3 qd, const Triangle &t, bool *borderline)
   if ((hp > 0 && hq > 0) || (hp < 0 && hq < 0)) return false;
   if (hp == hq) return false;
   const V pq = q - p;
-  const LD u = dotl(pq, crossl(c - p, b - p)), v = dotl(pq, crossl(a - p, c - p)),
-           w = dotl(pq, crossl(b - p, a - p));
-  const LD scale = norml(pq) * nn;
+  const LD u = dot(pq, cross(c - p, b - p)), v = dot(pq, cross(a - p, c - p)),
+           w = dot(pq, cross(b - p, a - p));
+  const LD scale = norm(pq) * nn;
   if (std::fabs(u) < 1e-9L * scale || std::fabs(v) < 1e-9L * scale || std::fabs(w) < 1e-9L * scale)
     *borderline = true;
   return (u >= 0 && v >= 0 && w >= 0) || (u <= 0 && v <= 0 && w <= 0);
@@ -168,19 +144,19 @@ bool ref_crosses(Vec3 pd, Vec3 qd, const Triangle &t, bool *borderline)
 
 LD ref_plane_height(Vec3 x, const Plane &p)
 {
-  return dotl(ld(x) - ld(p.point), ld(p.normal)) / norml(ld(p.normal));
+  return dot(ld(x) - ld(p.point), ld(p.normal)) / norm(ld(p.normal));
 }
 
 // x about the cylinder's axis: a x (x - point) / |a|, the part of x - point
 // across the axis turned a quarter (same length).
 V ref_across(Vec3 x, const Cylinder &y)
 {
-  return (1 / norml(ld(y.axis))) * crossl(ld(y.axis), ld(x) - ld(y.point));
+  return (1 / norm(ld(y.axis))) * cross(ld(y.axis), ld(x) - ld(y.point));
 }
 
 LD ref_axis_distance(Vec3 x, const Cylinder &y)
 {
-  return norml(ref_across(x, y));
+  return norm(ref_across(x, y));
 }
 
 // Closest approach to the axis of the path from -> c.

@@ -48,6 +48,17 @@ Vec3 random_unit(std::mt19937_64 &rng)
   return (1.0 / norm(v)) * v;
 }
 
+// Draws n random directions into dir; true when they are spread: every
+// pairwise angle above 20 degrees (well-conditioned neighbours).
+bool spread_directions(std::mt19937_64 &rng, Vec3 *dir, int n)
+{
+  for (int i = 0; i < n; ++i) dir[i] = random_unit(rng);
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j)
+      if (!(dot(dir[i], dir[j]) < std::cos(0.35))) return false;
+  return true;
+}
+
 // Regular tetrahedron with edge e, centred at the origin.
 void tetrahedron(double e, double radius, Sphere in[4])
 {
@@ -101,11 +112,7 @@ TEST(Kernel, RecoversKnownSphereRandomized)
   double worst_polished = 0;
   while (tried < 20000) {
     Vec3 dir[4];
-    for (Vec3 &d : dir) d = random_unit(rng);
-    bool spread = true;
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j) spread = spread && dot(dir[i], dir[j]) < std::cos(0.35);
-    if (!spread) continue;
+    if (!spread_directions(rng, dir, 4)) continue;
     ++tried;
     const double radius[4] = {unif(rng), unif(rng), unif(rng), unif(rng)};
     const Sphere known{{unif(rng), -unif(rng), unif(rng)}, unif(rng)};
@@ -392,12 +399,8 @@ TEST(Kernel, ThreeTangentRecoversKnownSphere)
     for (double offset : {0.0, 1e3}) {
       for (int draw = 0; draw < 3000; ++draw) {
         Vec3 dir[3];
-        for (Vec3 &d : dir) d = random_unit(rng);
         // Not nearly collinear centres: directions well apart.
-        bool spread = true;
-        for (int i = 0; i < 3; ++i)
-          for (int j = i + 1; j < 3; ++j) spread = spread && dot(dir[i], dir[j]) < std::cos(0.35);
-        if (!spread) continue;
+        if (!spread_directions(rng, dir, 3)) continue;
         ++tried;
         const Sphere known{scale * Vec3{unif(rng) + offset, -unif(rng), unif(rng)},
                            scale * unif(rng)};

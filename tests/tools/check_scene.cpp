@@ -40,6 +40,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "vec3.h"
+
 namespace {
 
 struct Atom {
@@ -332,33 +334,7 @@ bool same_place(const Dump &box, const Atom &a, const Atom &b)
 // ---------------------------------------------------------------------------
 // Walls the moved matrix spheres must stay clear of (--wall-plane,
 // --wall-cylinder, --wall-stl, --inside-box): exact geometry, brute force.
-struct Vec {
-  double x = 0, y = 0, z = 0;
-};
-Vec operator-(Vec a, Vec b)
-{
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-Vec operator+(Vec a, Vec b)
-{
-  return {a.x + b.x, a.y + b.y, a.z + b.z};
-}
-Vec operator*(double s, Vec a)
-{
-  return {s * a.x, s * a.y, s * a.z};
-}
-double dot(Vec a, Vec b)
-{
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-Vec cross(Vec a, Vec b)
-{
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-double norm(Vec a)
-{
-  return std::sqrt(dot(a, a));
-}
+using Vec = tools::Vec<double>;
 Vec vec(const double *x)
 {
   return {x[0], x[1], x[2]};

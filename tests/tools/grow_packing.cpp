@@ -49,6 +49,8 @@
 #include <string>
 #include <vector>
 
+#include "periodic_box.h"
+
 namespace {
 
 [[noreturn]] void usage(const std::string &why)
@@ -66,45 +68,11 @@ double num(int argc, char **argv, int i)
   return v;
 }
 
-// splitmix64: portable, deterministic uniform doubles in [0, 1).
-struct Rng {
-  std::uint64_t s;
-  explicit Rng(std::uint64_t seed) : s(seed * 0x9E3779B97F4A7C15ULL + 12345) {}
-  std::uint64_t next()
-  {
-    std::uint64_t z = (s += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
-  }
-  double uniform() { return (next() >> 11) * (1.0 / 9007199254740992.0); }
-};
+using tools::kFourThirdsPi;
+using tools::Rng;
+using Box = tools::PeriodicBox;
 
-constexpr double kFourThirdsPi = 4.1887902047863905;
-
-struct Box {
-  double lo[3], hi[3];
-  bool periodic[3];
-  double len(int k) const { return hi[k] - lo[k]; }
-  void delta(const double *a, const double *b, double *d) const
-  {
-    for (int k = 0; k < 3; ++k) {
-      d[k] = a[k] - b[k];
-      if (periodic[k]) d[k] -= len(k) * std::round(d[k] / len(k));
-    }
-  }
-  void wrap(double *x) const
-  {
-    for (int k = 0; k < 3; ++k)
-      if (periodic[k]) {
-        x[k] -= len(k) * std::floor((x[k] - lo[k]) / len(k));
-        if (x[k] >= hi[k]) x[k] = lo[k];
-      }
-  }
-};
-
-// A uniform cell grid over the box; neighbour cells deduplicated so that a
-// periodic dimension with fewer than three cells is still right.
+// A uniform cell grid over the box.
 struct Grid {
   int n[3] = {1, 1, 1};
   double size[3] = {1, 1, 1};
@@ -136,32 +104,14 @@ struct Grid {
   {
     return (coord(p[0], 0) * n[1] + coord(p[1], 1)) * n[2] + coord(p[2], 2);
   }
-  // The cells within `reach` cells of p's cell (sorted, unique).
+  // The cells within `reach` cells of p's cell, each once (for_cells_around),
+  // in increasing order.
   void around(const double *p, int reach, std::vector<int> &out) const
   {
     out.clear();
-    int c[3], lo[3], hi[3];
-    for (int k = 0; k < 3; ++k) {
-      c[k] = coord(p[k], k);
-      lo[k] = c[k] - reach;
-      hi[k] = c[k] + reach;
-      if (!box->periodic[k]) {
-        lo[k] = std::max(lo[k], 0);
-        hi[k] = std::min(hi[k], n[k] - 1);
-      } else if (hi[k] - lo[k] + 1 >= n[k]) {
-        lo[k] = 0;
-        hi[k] = n[k] - 1;
-      }
-    }
-    for (int a = lo[0]; a <= hi[0]; ++a)
-      for (int b = lo[1]; b <= hi[1]; ++b)
-        for (int d = lo[2]; d <= hi[2]; ++d) {
-          const int ia = ((a % n[0]) + n[0]) % n[0], ib = ((b % n[1]) + n[1]) % n[1],
-                    id = ((d % n[2]) + n[2]) % n[2];
-          out.push_back((ia * n[1] + ib) * n[2] + id);
-        }
+    const int c[3] = {coord(p[0], 0), coord(p[1], 1), coord(p[2], 2)};
+    tools::for_cells_around(*box, n, c, reach, [&](int cell) { out.push_back(cell); });
     std::sort(out.begin(), out.end());
-    out.erase(std::unique(out.begin(), out.end()), out.end());
   }
 };
 
@@ -192,9 +142,7 @@ double union_volume(const Box &box, const std::vector<double> &c, const std::vec
     double s1 = 0, s2 = 0;
     for (int m = 0; m < samples; ++m) {
       double p[3], q[3];
-      do {
-        for (double &v : q) v = 2 * rng.uniform() - 1;
-      } while (q[0] * q[0] + q[1] * q[1] + q[2] * q[2] > 1);
+      rng.in_unit_ball(q);
       for (int k = 0; k < 3; ++k) p[k] = c[3 * i + k] + r[i] * q[k];
       box.wrap(p);
       g.around(p, 1, cells);
@@ -454,13 +402,8 @@ int main(int argc, char **argv)
   pk.rmax = rmax;
   // Bars exactly as make_scene lays them out.
   for (const auto &b : bars) {
-    const double len =
-        std::sqrt(std::pow(b[3] - b[0], 2) + std::pow(b[4] - b[1], 2) + std::pow(b[5] - b[2], 2));
-    const int n = std::max(1, static_cast<int>(std::round(len / b[7])));
     const std::size_t first = pk.br.size();
-    for (int s = 0; s <= n; ++s) {
-      const double t = static_cast<double>(s) / n;
-      double p[3] = {b[0] + t * (b[3] - b[0]), b[1] + t * (b[4] - b[1]), b[2] + t * (b[5] - b[2])};
+    tools::for_bar_centres(b, [&](const double *p) {
       double q[3] = {p[0], p[1], p[2]};
       box.wrap(q);
       bool twin = false;
@@ -470,11 +413,11 @@ int main(int argc, char **argv)
         twin = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) <
                1e-9 * (box.len(0) + box.len(1) + box.len(2));
       }
-      if (twin) continue;
+      if (twin) return;
       pk.bx.insert(pk.bx.end(), q, q + 3);    // wrapped into a periodic box
       pk.br.push_back(b[6]);
       pk.brmax = std::max(pk.brmax, b[6]);
-    }
+    });
   }
   const double vbox = box.len(0) * box.len(1) * box.len(2);
   double vbars = 0, vbars_se = 0;

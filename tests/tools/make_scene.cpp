@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "periodic_box.h"
+
 namespace {
 
 struct Atom {
@@ -113,16 +115,10 @@ int main(int argc, char **argv)
                    slack * (2 * u(rng) - 1);
           atoms.push_back({1, r, c[0], c[1], c[2]});
         }
-  for (const auto &b : bars) {
-    const double len =
-        std::sqrt(std::pow(b[3] - b[0], 2) + std::pow(b[4] - b[1], 2) + std::pow(b[5] - b[2], 2));
-    const int n = std::max(1, static_cast<int>(std::round(len / b[7])));
-    for (int s = 0; s <= n; ++s) {
-      const double t = static_cast<double>(s) / n;
-      atoms.push_back(
-          {2, b[6], b[0] + t * (b[3] - b[0]), b[1] + t * (b[4] - b[1]), b[2] + t * (b[5] - b[2])});
-    }
-  }
+  for (const auto &b : bars)
+    tools::for_bar_centres(b, [&](const double *p) {
+      atoms.push_back({2, b[6], p[0], p[1], p[2]});
+    });
   for (const auto &h : hoops) {
     const int axis = static_cast<int>(h[3]);
     const int n = std::max(3, static_cast<int>(std::round(2 * M_PI * h[4] / h[6])));

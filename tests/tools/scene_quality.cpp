@@ -23,10 +23,10 @@
 // Exit status: 0 every assertion passed, 1 one failed, 2 bad usage or input.
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -34,9 +34,12 @@
 #include <unordered_map>
 #include <vector>
 
+#include "periodic_box.h"
+
 namespace {
 
-constexpr double kFourThirdsPi = 4.1887902047863905;
+using tools::kFourThirdsPi;
+using tools::Rng;
 constexpr double kFar = std::numeric_limits<double>::infinity();
 
 [[noreturn]] void bad(const std::string &why)
@@ -53,19 +56,6 @@ double to_double(const std::string &s, const std::string &what)
   return v;
 }
 
-struct Rng {    // splitmix64
-  std::uint64_t s;
-  explicit Rng(std::uint64_t seed) : s(seed * 0x9E3779B97F4A7C15ULL + 12345) {}
-  std::uint64_t next()
-  {
-    std::uint64_t z = (s += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
-  }
-  double uniform() { return (next() >> 11) * (1.0 / 9007199254740992.0); }
-};
-
 struct Atom {
   long id;
   int type;
@@ -73,28 +63,10 @@ struct Atom {
   double r;
 };
 
-struct Scene {
+struct Scene : tools::PeriodicBox {
   std::string path;
-  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
-  bool periodic[3] = {false, false, false};
   std::vector<Atom> atoms;
-  double len(int k) const { return hi[k] - lo[k]; }
   double volume() const { return len(0) * len(1) * len(2); }
-  void delta(const double *a, const double *b, double *d) const
-  {
-    for (int k = 0; k < 3; ++k) {
-      d[k] = a[k] - b[k];
-      if (periodic[k]) d[k] -= len(k) * std::round(d[k] / len(k));
-    }
-  }
-  void wrap(double *x) const
-  {
-    for (int k = 0; k < 3; ++k)
-      if (periodic[k]) {
-        x[k] -= len(k) * std::floor((x[k] - lo[k]) / len(k));
-        if (x[k] >= hi[k]) x[k] = lo[k];
-      }
-  }
 };
 
 Scene read_scene(const std::string &path, const bool *data_periodic)
@@ -240,26 +212,10 @@ struct Grid {
   // Calls f(atom) for every item in the cells within `reach` of p's cell.
   template <class F> void visit(const double *p, int reach, F f) const
   {
-    int lo[3], hi[3];
-    for (int k = 0; k < 3; ++k) {
-      const int c = coord(p[k], k);
-      lo[k] = c - reach;
-      hi[k] = c + reach;
-      if (!s->periodic[k]) {
-        lo[k] = std::max(lo[k], 0);
-        hi[k] = std::min(hi[k], n[k] - 1);
-      } else if (hi[k] - lo[k] + 1 >= n[k]) {
-        lo[k] = 0;
-        hi[k] = n[k] - 1;
-      }
-    }
-    for (int a = lo[0]; a <= hi[0]; ++a)
-      for (int b = lo[1]; b <= hi[1]; ++b)
-        for (int d = lo[2]; d <= hi[2]; ++d) {
-          const int ia = ((a % n[0]) + n[0]) % n[0], ib = ((b % n[1]) + n[1]) % n[1],
-                    id = ((d % n[2]) + n[2]) % n[2];
-          for (int j = head[(ia * n[1] + ib) * n[2] + id]; j >= 0; j = next[j]) f(*items[j]);
-        }
+    const int c[3] = {coord(p[0], 0), coord(p[1], 1), coord(p[2], 2)};
+    tools::for_cells_around(*s, n, c, reach, [&](int cell) {
+      for (int j = head[cell]; j >= 0; j = next[j]) f(*items[j]);
+    });
   }
   int reach_for(double dist) const
   {
@@ -392,9 +348,7 @@ double union_volume(const Scene &s, int rebar_type, int samples, double *se)
     double s1 = 0, s2 = 0;
     for (int m = 0; m < samples; ++m) {
       double q[3], p[3];
-      do {
-        for (double &v : q) v = 2 * rng.uniform() - 1;
-      } while (q[0] * q[0] + q[1] * q[1] + q[2] * q[2] > 1);
+      rng.in_unit_ball(q);
       for (int k = 0; k < 3; ++k) p[k] = a->x[k] + a->r * q[k];
       s.wrap(p);
       int holders = 0;
@@ -471,9 +425,36 @@ int main(int argc, char **argv)
     if (i >= argc) bad(std::string("missing value after ") + argv[i - 1]);
     return std::string(argv[i]);
   };
+  // The options that take only real numbers (none to two, in this order) and
+  // may raise a flag (the assertions): one table rather than a branch each.
+  struct Plain {
+    const char *name;
+    bool *flag;
+    double *value[2];
+  };
+  const Plain plain[] = {{"--rmin", nullptr, {&o.rmin}},
+                         {"--rmax", nullptr, {&o.rmax}},
+                         {"--bin", nullptr, {&o.bin}},
+                         {"--out", nullptr, {&o.out}},
+                         {"--bulk-from", nullptr, {&o.bulk_from}},
+                         {"--wall-zone", nullptr, {&o.wall_zone}},
+                         {"--tol", nullptr, {&o.tol}},
+                         {"--quiet-profile", &o.quiet_profile, {}},
+                         {"--shell-vs-reference", &a_shell, {&shell_lo, &shell_hi}},
+                         {"--bin-diff", &a_bin, {&bin_max, &bin_out}},
+                         {"--ks-max", &a_ks, {&ks_max}},
+                         {"--shell-max-over-reference", &a_over, {&over_max}},
+                         {"--expect-union", &a_union, {&union_expect}},
+                         {"--check-sampling", &a_sampling, {}}};
   for (int i = 1; i < argc; ++i) {
     const std::string k = argv[i];
-    if (k == "--after")
+    const Plain *opt = std::find_if(std::begin(plain), std::end(plain),
+                                    [&](const Plain &p) { return k == p.name; });
+    if (opt != std::end(plain)) {
+      if (opt->flag) *opt->flag = true;
+      for (double *v : opt->value)
+        if (v) *v = to_double(need(++i), k);
+    } else if (k == "--after")
       after_path = need(++i);
     else if (k == "--before")
       before_path = need(++i);
@@ -481,54 +462,19 @@ int main(int argc, char **argv)
       ref_path = need(++i);
     else if (k == "--rebar-type")
       o.rebar_type = std::atoi(need(++i).c_str());
-    else if (k == "--rmin")
-      o.rmin = to_double(need(++i), k);
-    else if (k == "--rmax")
-      o.rmax = to_double(need(++i), k);
-    else if (k == "--bin")
-      o.bin = to_double(need(++i), k);
-    else if (k == "--out")
-      o.out = to_double(need(++i), k);
-    else if (k == "--bulk-from")
-      o.bulk_from = to_double(need(++i), k);
-    else if (k == "--wall-zone")
-      o.wall_zone = to_double(need(++i), k);
     else if (k == "--points")
       o.points = static_cast<long>(to_double(need(++i), k));
     else if (k == "--union-samples")
       o.union_samples = static_cast<int>(to_double(need(++i), k));
-    else if (k == "--tol")
-      o.tol = to_double(need(++i), k);
-    else if (k == "--quiet-profile")
-      o.quiet_profile = true;
     else if (k == "--boundary") {
       for (bool &p : data_periodic) {
         const std::string b = need(++i);
         if (b != "f" && b != "p") bad("--boundary takes f or p per dimension");
         p = b == "p";
       }
-    } else if (k == "--shell-vs-reference") {
-      a_shell = true;
-      shell_lo = to_double(need(++i), k);
-      shell_hi = to_double(need(++i), k);
-    } else if (k == "--bin-diff") {
-      a_bin = true;
-      bin_max = to_double(need(++i), k);
-      bin_out = to_double(need(++i), k);
-    } else if (k == "--ks-max") {
-      a_ks = true;
-      ks_max = to_double(need(++i), k);
     } else if (k == "--moved-within") {
       a_moved = true;
       moved_text = need(++i);
-    } else if (k == "--shell-max-over-reference") {
-      a_over = true;
-      over_max = to_double(need(++i), k);
-    } else if (k == "--expect-union") {
-      a_union = true;
-      union_expect = to_double(need(++i), k);
-    } else if (k == "--check-sampling") {
-      a_sampling = true;
     } else {
       bad("unknown option " + k + " (usage: tests/tools/README.md)");
     }
