@@ -54,7 +54,9 @@ fi
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1
 export REINFORCE_BUILD="${REINFORCE_BUILD_DIR:-$top/build}"
-jobs=${REINFORCE_TEST_JOBS:-2}
+# Twice the cores: most tests wait more than they compute (MPI start-up,
+# oversubscribed processes), and ctest counts a test's PROCESSORS.
+jobs=${REINFORCE_TEST_JOBS:-$((2 * $(nproc)))}
 passed=0 failed=0
 parts=()       # one line per part run: "name: N tests, P passed, F failed (groups)"
 skipped=()     # one line per part or host left out, with the reason
@@ -148,57 +150,23 @@ for ((k = 0; k < ${#host_exe[@]}; k += 2)); do
   fi
 done
 
-echo "== main build: all tests"
-exclude_re=$(IFS='|'; echo "${exclude[*]}")
-check_families main "$REINFORCE_BUILD" "${hosts[@]}" -- ${exclude_re:+-E "$exclude_re"} "$@"
-part=main run_ctest "$REINFORCE_BUILD" ${exclude_re:+-E "$exclude_re"} "$@"
-
+# The later parts (sanitizer, fuzz, source) are decided now, and their
+# builds run in the background, one after the other and at a lower
+# priority, while the main part's tests run: those mostly wait (MPI start-up,
+# one another), leaving the cores idle. Each part waits for its own build.
+run_sanitizer=0 run_fuzz=0 run_source=0
 if [ "${REINFORCE_QUICK:-0}" = 1 ]; then
   skipped+=("sanitizer (REINFORCE_QUICK=1)" "fuzz (REINFORCE_QUICK=1)")
+else
+  for p in sanitizer fuzz; do
+    if why=$(skip_reason "$p") && [ -n "$why" ]; then
+      skipped+=("$p (skipped on purpose: $why)")
+    else
+      eval "run_$p=1"
+    fi
+  done
 fi
-if [ "${REINFORCE_QUICK:-0}" != 1 ] && why=$(skip_reason sanitizer) && [ -n "$why" ]; then
-  skipped+=("sanitizer (skipped on purpose: $why)")
-elif [ "${REINFORCE_QUICK:-0}" != 1 ]; then
-  echo "== sanitizer build (ASan + UBSan): core tests and MPI scenes"
-  san="$top/build-sanitize"
-  san_args=(-DREINFORCE_LIGGGHTS=OFF) san_targets=(core_tests make_scene check_scene) san_hosts=()
-  san_tests="^Kernel|^Engine|^Fix|^Schedule|^Summary|^Invocation|^CellGrid|^RoundRecords|^Totals|^Regrowth|^stability_periodic_2x2x1_np4$|^stability_stiff|^lammps_identical_keep_2x2x1_np4$|^lammps_scene_eight_thin_subdomains_search_0.02_np8$|^lammps_identical_regrow_2x2x1_np4$"
-  if [ -n "$(skip_reason lammps)" ]; then
-    san_args+=(-DREINFORCE_LAMMPS=OFF) san_tests="^Kernel|^Engine|^Fix|^Schedule|^Summary|^Invocation|^CellGrid|^RoundRecords|^Totals|^Regrowth"
-    skipped+=("sanitizer: LAMMPS scenes (lammps skipped)")
-  else
-    # ON explicitly: an OFF left in build-sanitize's cache must not drop the scenes
-    san_args+=(-DREINFORCE_LAMMPS=ON) san_targets+=(lmp_reinforce) san_hosts+=(lammps)
-  fi
-  if cmake -S "$top" -B "$san" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DREINFORCE_SANITIZE=ON \
-       "${san_args[@]}" >/dev/null &&
-     cmake --build "$san" -j"${REINFORCE_BUILD_JOBS:-$(nproc)}" --target "${san_targets[@]}"; then
-    check_families sanitizer "$san" "${san_hosts[@]}" -- -R "${REINFORCE_SANITIZE_TESTS:-$san_tests}"
-    # Open MPI's own allocations are not ours to judge: no leak check.
-    ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
-      part=sanitizer run_ctest "$san" -R "${REINFORCE_SANITIZE_TESTS:-$san_tests}"
-  else
-    echo "sanitizer build failed"; failed=$((failed + 1)); parts+=("sanitizer: FAILED: build failed")
-  fi
-fi
-
-if [ "${REINFORCE_QUICK:-0}" != 1 ] && why=$(skip_reason fuzz) && [ -n "$why" ]; then
-  skipped+=("fuzz (skipped on purpose: $why)")
-elif [ "${REINFORCE_QUICK:-0}" != 1 ]; then
-  echo "== fuzz build (clang, libFuzzer)"
-  fuzz="$top/build-fuzz"
-  if CC=clang CXX=clang++ cmake -S "$top" -B "$fuzz" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-       -DREINFORCE_FUZZ=ON -DREINFORCE_TESTS=OFF -DREINFORCE_LAMMPS=OFF -DREINFORCE_LIGGGHTS=OFF \
-       >/dev/null && cmake --build "$fuzz" -j"${REINFORCE_BUILD_JOBS:-$(nproc)}"; then
-    check_families fuzz "$fuzz" --
-    part=fuzz run_ctest "$fuzz"
-  else
-    echo "fuzz build failed"; failed=$((failed + 1)); parts+=("fuzz: FAILED: build failed")
-  fi
-fi
-
-# ---- part "source": hosts built from source (tests/source_hosts) -----------
-# Runs when a tree is named: REINFORCE_LAMMPS_SOURCE and/or
+# Part "source" runs when a tree is named: REINFORCE_LAMMPS_SOURCE and/or
 # REINFORCE_LIGGGHTS_SOURCE, each a source tree or its .tar.gz (.ci/run names
 # ../shared/hosts). A named tree that does not build fails the command.
 if [ -z "${REINFORCE_LAMMPS_SOURCE:-}${REINFORCE_LIGGGHTS_SOURCE:-}" ]; then
@@ -208,8 +176,81 @@ elif [ "${REINFORCE_QUICK:-0}" = 1 ]; then
 elif why=$(skip_reason source) && [ -n "$why" ]; then
   skipped+=("source (skipped on purpose: $why)")
 else
+  run_source=1
+fi
+
+san="$top/build-sanitize"
+san_args=(-DREINFORCE_LIGGGHTS=OFF) san_targets=(core_tests make_scene check_scene) san_hosts=()
+san_tests="^Kernel|^Engine|^Fix|^Schedule|^Summary|^Invocation|^CellGrid|^RoundRecords|^Totals|^Regrowth|^stability_periodic_2x2x1_np4$|^stability_stiff|^lammps_identical_keep_2x2x1_np4$|^lammps_scene_eight_thin_subdomains_search_0.02_np8$|^lammps_identical_regrow_2x2x1_np4$"
+if [ -n "$(skip_reason lammps)" ]; then
+  san_args+=(-DREINFORCE_LAMMPS=OFF) san_tests="^Kernel|^Engine|^Fix|^Schedule|^Summary|^Invocation|^CellGrid|^RoundRecords|^Totals|^Regrowth"
+  [ "$run_sanitizer" = 0 ] || skipped+=("sanitizer: LAMMPS scenes (lammps skipped)")
+else
+  # ON explicitly: an OFF left in build-sanitize's cache must not drop the scenes
+  san_args+=(-DREINFORCE_LAMMPS=ON) san_targets+=(lmp_reinforce) san_hosts+=(lammps)
+fi
+fuzz="$top/build-fuzz"
+build_jobs=${REINFORCE_BUILD_JOBS:-$(nproc)}
+build_sanitizer() {
+  cmake -S "$top" -B "$san" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DREINFORCE_SANITIZE=ON "${san_args[@]}" >/dev/null &&
+    cmake --build "$san" -j"$build_jobs" --target "${san_targets[@]}"
+}
+build_fuzz() {
+  CC=clang CXX=clang++ cmake -S "$top" -B "$fuzz" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DREINFORCE_FUZZ=ON -DREINFORCE_TESTS=OFF -DREINFORCE_LAMMPS=OFF -DREINFORCE_LIGGGHTS=OFF >/dev/null &&
+    cmake --build "$fuzz" -j"$build_jobs"
+}
+build_source() { bash "$top/tests/source_hosts/prepare.sh" "$top/build-source"; }
+ahead=$(mktemp -d)
+(
+  renice -n 10 -p "$BASHPID" >/dev/null 2>&1 || true    # inherited by the builds
+  for p in sanitizer fuzz source; do
+    v=run_$p
+    [ "${!v}" = 1 ] || continue
+    "build_$p" >"$ahead/$p.log" 2>&1
+    echo $? >"$ahead/$p.rc"
+  done
+) &
+ahead_pid=$!
+# await PART: prints its build's output; its status is the build's.
+await() {
+  while [ ! -f "$ahead/$1.rc" ] && kill -0 "$ahead_pid" 2>/dev/null; do sleep 1; done
+  cat "$ahead/$1.log" 2>/dev/null
+  [ -f "$ahead/$1.rc" ] && return "$(cat "$ahead/$1.rc")"
+  return 1
+}
+
+echo "== main build: all tests"
+exclude_re=$(IFS='|'; echo "${exclude[*]}")
+check_families main "$REINFORCE_BUILD" "${hosts[@]}" -- ${exclude_re:+-E "$exclude_re"} "$@"
+part=main run_ctest "$REINFORCE_BUILD" ${exclude_re:+-E "$exclude_re"} "$@"
+
+if [ "$run_sanitizer" = 1 ]; then
+  echo "== sanitizer build (ASan + UBSan): core tests and MPI scenes"
+  if await sanitizer; then
+    check_families sanitizer "$san" "${san_hosts[@]}" -- -R "${REINFORCE_SANITIZE_TESTS:-$san_tests}"
+    # Open MPI's own allocations are not ours to judge: no leak check.
+    ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+      part=sanitizer run_ctest "$san" -R "${REINFORCE_SANITIZE_TESTS:-$san_tests}"
+  else
+    echo "sanitizer build failed"; failed=$((failed + 1)); parts+=("sanitizer: FAILED: build failed")
+  fi
+fi
+
+if [ "$run_fuzz" = 1 ]; then
+  echo "== fuzz build (clang, libFuzzer)"
+  if await fuzz; then
+    check_families fuzz "$fuzz" --
+    part=fuzz run_ctest "$fuzz"
+  else
+    echo "fuzz build failed"; failed=$((failed + 1)); parts+=("fuzz: FAILED: build failed")
+  fi
+fi
+
+# ---- part "source": hosts built from source (tests/source_hosts) -----------
+if [ "$run_source" = 1 ]; then
   echo "== source-built hosts: LAMMPS (plugin, in-tree package, bigbig), LIGGGHTS (drop-in)"
-  if bash "$top/tests/source_hosts/prepare.sh" "$top/build-source"; then
+  if await source; then
     src_hosts=()
     [ -z "${REINFORCE_LAMMPS_SOURCE:-}" ] || src_hosts+=(lammps_source)
     [ -z "${REINFORCE_LIGGGHTS_SOURCE:-}" ] || src_hosts+=(liggghts_source)
@@ -220,6 +261,8 @@ else
     parts+=("source: FAILED: a named host tree did not unpack, configure or build (above)")
   fi
 fi
+wait "$ahead_pid" 2>/dev/null
+rm -rf "$ahead"
 # ---- end of part "source" ----------------------------------------------------
 
 # More parts go above this line: `part=NAME run_ctest DIR [ctest args]` lists

@@ -14,14 +14,10 @@ set(PERIODIC "--box 0 0.6 0 0.3 0 0.3 --radius 0.004 0.008 --fcc --bar 0 0.1 0.1
 set(RANGE "--rmin 0.004 --rmax 0.008")
 
 # src_error(NAME NP EXPECTED FIX [-var ...]): one exact ERROR line (expect_error.sh).
+include(${SCRIPTS}/error_test.cmake)
 function(src_error name np expected fix)
-  add_test(NAME src_lammps_error_${name}
-           COMMAND ${SCRIPTS}/expect_error.sh ${PLUGIN_LMP} ${np} ${ERROR_INPUT} "${expected}" -var fix "${fix}" ${ARGN})
-  set_tests_properties(src_lammps_error_${name} PROPERTIES TIMEOUT 180 ENVIRONMENT "EXPECT_EXACT=1"
-                       PASS_REGULAR_EXPRESSION "PASS: " FAIL_REGULAR_EXPRESSION "FAIL")
-  if(np GREATER 1)
-    set_tests_properties(src_lammps_error_${name} PROPERTIES PROCESSORS 2)
-  endif()
+  reinforce_error_test(src_lammps_error_${name} ${PLUGIN_LMP} ${np} ${ERROR_INPUT} "${expected}" "${fix}"
+                       ${ARGN})
 endfunction()
 
 # src_scene(NAME NP AS_BUILD MAKE_ARGS VARS CHECK_ARGS [ENV]): a scene (scene.sh, run_scene.sh).
