@@ -44,8 +44,14 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 build="${REINFORCE_BUILD_DIR:-$top/build}"
+# Compiled through ccache (installed above), in the folder the source-built
+# hosts use: a second clone on the same machine compiles nothing again
+# (paths taken relative to the clone's top).
+export CCACHE_DIR="${CCACHE_DIR:-$HOME/.cache/reinforce-ccache}" CCACHE_BASEDIR="$top"
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
 # shellcheck disable=SC2086    # REINFORCE_CMAKE_ARGS: words
-cmake -S "$top" -B "$build" -DCMAKE_BUILD_TYPE=Release ${REINFORCE_CMAKE_ARGS:-} >/dev/null ||
+cmake -S "$top" -B "$build" -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" ${REINFORCE_CMAKE_ARGS:-} >/dev/null ||
   { echo "setup: FAILED: cmake configure of $build (exit $?)" >&2; return 1 2>/dev/null || exit 1; }
 cmake --build "$build" -j"${REINFORCE_BUILD_JOBS:-$(nproc)}" ||
   { echo "setup: FAILED: build in $build (exit $?)" >&2; return 1 2>/dev/null || exit 1; }

@@ -191,13 +191,18 @@ else
 fi
 fuzz="$top/build-fuzz"
 build_jobs=${REINFORCE_BUILD_JOBS:-$(nproc)}
+# Through ccache as the main build (setup.sh).
+export CCACHE_DIR="${CCACHE_DIR:-$HOME/.cache/reinforce-ccache}" CCACHE_BASEDIR="$top"
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
 build_sanitizer() {
-  cmake -S "$top" -B "$san" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DREINFORCE_SANITIZE=ON "${san_args[@]}" >/dev/null &&
+  cmake -S "$top" -B "$san" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DREINFORCE_SANITIZE=ON "${launcher[@]}" \
+    "${san_args[@]}" >/dev/null &&
     cmake --build "$san" -j"$build_jobs" --target "${san_targets[@]}"
 }
 build_fuzz() {
   CC=clang CXX=clang++ cmake -S "$top" -B "$fuzz" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DREINFORCE_FUZZ=ON -DREINFORCE_TESTS=OFF -DREINFORCE_LAMMPS=OFF -DREINFORCE_LIGGGHTS=OFF >/dev/null &&
+    -DREINFORCE_FUZZ=ON -DREINFORCE_TESTS=OFF -DREINFORCE_LAMMPS=OFF -DREINFORCE_LIGGGHTS=OFF "${launcher[@]}" >/dev/null &&
     cmake --build "$fuzz" -j"$build_jobs"
 }
 build_source() { bash "$top/tests/source_hosts/prepare.sh" "$top/build-source"; }
