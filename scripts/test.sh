@@ -7,7 +7,10 @@
 #     the LAMMPS fix: the core tests and MPI scenes;
 #  3. a clang build of the libFuzzer targets, each run for a fixed number of
 #     executions.
-# REINFORCE_QUICK=1 runs only the first.
+# The later parts' builds (and the source-built hosts') run in the
+# background while the first part's tests run; ctest runs twice as many
+# jobs as cores (REINFORCE_TEST_JOBS sets it). REINFORCE_QUICK=1 runs only
+# the first.
 #
 # It stops with a non-zero status when the install or the build fails (no
 # test is run on binaries left from before). Only REINFORCE_SKIP leaves a
