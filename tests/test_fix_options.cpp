@@ -306,7 +306,8 @@ TEST(FixOptions, ImpossibleRadiusRangeFromScene)
     }
     return "";
   };
-  EXPECT_EQ(settings_error(0.0, 0.0), "Fix reinforce/invert: impossible radius range [0, 0]");    // empty matrix
+  EXPECT_EQ(settings_error(0.0, 0.0),
+            "Fix reinforce/invert: impossible radius range [0, 0]");    // empty matrix
   EXPECT_EQ(settings_error(0.3, 0.1), "Fix reinforce/invert: impossible radius range [0.3, 0.1]");
 }
 

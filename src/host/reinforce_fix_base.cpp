@@ -83,8 +83,7 @@ void ReinforceFixBase::check_setup()
   if (domain->triclinic) fail(FLERR, me + "does not support triclinic boxes");
 
   rebar_group = group->find(options.rebar_group.c_str());
-  if (rebar_group < 0)
-    fail(FLERR, me + "rebar group '" + options.rebar_group + "' does not exist");
+  if (rebar_group < 0) fail(FLERR, me + "rebar group '" + options.rebar_group + "' does not exist");
   if (rebar_group == igroup) fail(FLERR, me + "rebar group must differ from the fix group");
   rebar_bit = group->bitmask[rebar_group];
 

@@ -99,8 +99,8 @@ protected:
 private:
   class Region *region = nullptr;
   std::vector<int> pending;
-  bool invoked = false;       // the relocation at the start of the first run is done
-  bool setup_seen = false;    // setup_pre_exchange ran in this run's setup
+  bool invoked = false;          // the relocation at the start of the first run is done
+  bool setup_seen = false;       // setup_pre_exchange ran in this run's setup
   std::vector<double> totals;    // f_ID[1..], the latest invocation
   // The atoms this invocation moved in the group of each fix spring/self:
   // their anchors are still the old positions.

@@ -48,8 +48,8 @@ template <class D> LAMMPS_NS::Region *find_region(D *domain, const std::string &
 // links against Debian's library: its fmt overloads are not exported),
 // LIGGGHTS takes const char *.
 template <class E>
-auto takes_string(E *error, int) -> decltype(error->warning(std::string(), 0, std::string()),
-                                             std::true_type());
+auto takes_string(E *error, int)
+    -> decltype(error->warning(std::string(), 0, std::string()), std::true_type());
 template <class E> std::false_type takes_string(E *, long);
 
 template <class E> void error_all(E *error, const char *file, int line, const std::string &message)

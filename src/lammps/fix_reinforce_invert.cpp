@@ -83,7 +83,8 @@ void FixReinforceInvert::check_host()
   if (comm->style != 0) fail(FLERR, me + "requires comm_style brick");
   if (comm->mode != Comm::SINGLE) fail(FLERR, me + "requires comm_modify mode single");
   // Ghosts of one group only would hide neighbours from the relocation.
-  if (CommAccess::border_group_of(comm) != 0) fail(FLERR, me + "does not support comm_modify group");
+  if (CommAccess::border_group_of(comm) != 0)
+    fail(FLERR, me + "does not support comm_modify group");
   // A dynamic group is evaluated by its fix during the run's setup, after
   // the relocation: refused rather than read half-evaluated.
   if (group->dynamic[rebar_group])

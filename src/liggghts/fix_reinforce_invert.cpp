@@ -49,7 +49,8 @@ int FixReinforceInvert::setmask()
 // group only would hide neighbours: both would leave overlaps.
 void FixReinforceInvert::check_host()
 {
-  if (CommAccess::style_of(comm) != 0) fail(FLERR, "Fix reinforce/invert requires communicate single");
+  if (CommAccess::style_of(comm) != 0)
+    fail(FLERR, "Fix reinforce/invert requires communicate single");
   if (CommAccess::border_group_of(comm) != 0)
     fail(FLERR, "Fix reinforce/invert does not support communicate group");
 }

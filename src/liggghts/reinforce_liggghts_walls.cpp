@@ -112,7 +112,7 @@ int LiggghtsWalls::add_mesh(FixMeshSurface &fix, MPI_Comm world)
 // as they are. Built again only when that reach grows (the engine asks
 // before and after raising the ghost cutoff); the same on every process.
 std::shared_ptr<const reinforce::Boundaries> LiggghtsWalls::in_view(const Domain &domain,
-                                                                     const double reach[3])
+                                                                    const double reach[3])
 {
   if (planes.empty() && cylinders.empty() && triangles.empty()) return nullptr;
   double margin = 0;
@@ -135,8 +135,7 @@ std::shared_ptr<const reinforce::Boundaries> LiggghtsWalls::in_view(const Domain
         for (reinforce::Vec3 *v : {&image.a, &image.b, &image.c}) (*v)[d] += s * length;
         const double lo = std::min({image.a[d], image.b[d], image.c[d]});
         const double hi = std::max({image.a[d], image.b[d], image.c[d]});
-        if (hi >= domain.boxlo[d] - margin && lo <= domain.boxhi[d] + margin)
-          all.push_back(image);
+        if (hi >= domain.boxlo[d] - margin && lo <= domain.boxhi[d] + margin) all.push_back(image);
       }
   }
   for (const reinforce::Triangle &t : all) walls->add(t);
