@@ -210,7 +210,7 @@ std::string summary_line(const Stats &t, bool keep_unplaced, double seconds, int
                          double rmin)
 {
   const long long kept = keep_unplaced ? t.unplaced : 0;
-  const long long deleted = t.unplaced - kept + t.matrix_deleted;
+  const long long deleted = t.unplaced - kept;
   char buf[600];
   std::snprintf(buf, sizeof buf,
                 "fix reinforce/invert: %lld targets, %lld relocated, %lld deleted (%lld displaced "

@@ -275,7 +275,7 @@ Totals run_invocation(HostHooks &host, const FixOptions &options)
   reduce_totals(host, totals);
   fold_regrowth(totals);
   const Stats &s = totals.stats;
-  totals.deleted = options.keep_unplaced ? 0 : static_cast<double>(s.unplaced + s.matrix_deleted);
+  totals.deleted = options.keep_unplaced ? 0 : static_cast<double>(s.unplaced);
   totals.kept = options.keep_unplaced ? static_cast<double>(s.unplaced) : 0;
   totals.seconds = host.max(host.wall_time() - start);
   if (totals.regrowth.seeds + totals.regrowth.shrunk_seeds > 0)

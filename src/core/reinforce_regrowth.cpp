@@ -10,21 +10,26 @@ namespace reinforce {
 
 namespace {
 
+// A moved sphere ends overlapping nothing by more than this share of the
+// smaller radius: exact but for rounding (a tenth of kRegrowthExact),
+// whatever tol is.
+constexpr double kClear = 1e-13;
 // A seed starts at this share of its radius and grows to its own in
 // kGrowthSteps equal steps, each followed by at most kStepIters FIRE steps
 // of the whole zone (fewer once no overlap exceeds kSettled of a radius);
 // a growth whose overlaps stay above kAbort of a radius after a step is
 // given up. Then at most kRelaxIters FIRE steps, until no overlap exceeds
-// kUnjam of tol (the zone unjams), else, when the overlaps are below
-// kNearlyClear, at most kFinalSweeps projection sweeps to tol.
+// kClear (the zone unjams), else, when the overlaps are below
+// kNearlyClear, at most kFinishIters more, then kFinalSweeps projection
+// sweeps.
 constexpr double kStartScale = 0.5;
 constexpr int kGrowthSteps = 10;
 constexpr int kStepIters = 100;
 constexpr double kSettled = 1e-4;
 constexpr double kAbort = 0.05;
 constexpr int kRelaxIters = 2000;
-constexpr double kUnjam = 0.2;
 constexpr double kNearlyClear = 2e-5;
+constexpr int kFinishIters = 4000;
 constexpr int kFinalSweeps = 200;
 // A seed tries at most kStarts places: the least overlapped points near
 // where it was. It fits alone at any of them, or grows from the first
@@ -41,9 +46,6 @@ constexpr double kWorstStart = 0.5;
 constexpr int kSettlePasses = 30;
 constexpr double kSettleStep = 0.1;
 constexpr int kAloneSweeps = 30;
-// A moved sphere ends overlapping nothing by more than this share of tol
-// (the checks after the fix use tol itself: room for their rounding).
-constexpr double kInnerTol = 0.5;
 // Compaction: the zone's matrix pulled towards its bar (kPull of its
 // radius, times its mobility, as a force) for kCompactIters FIRE steps,
 // then relaxed without the pull for kRelaxIters (kRelaxMore more when its
@@ -147,43 +149,55 @@ private:
     return out;
   }
 
-  // True when body i moved to p would overlap a present body (by more
-  // than kInnerTol of tol); `normal` then points from the first such body
-  // to p.
-  bool blocked_at(std::size_t i, Vec3 p, Vec3 &normal) const
+  // Body i moved along d as far as it goes, at most all of d: up to the
+  // first present body it would touch (then tangent to it, exact but for
+  // rounding), staying within its cap and admissible, else not at all.
+  // Returns the share of d moved; `normal` points from the body that
+  // stopped it to where it stopped (zero when none did).
+  double advance(std::size_t i, Vec3 d, Vec3 &normal)
   {
-    const Body &b = bodies_[i];
+    Body &b = bodies_[i];
+    normal = Vec3{};
+    const double a = norm2(d);
+    if (!(a > 0)) return 0;
+    double t = 1;
+    int stop = -1;
     for (const Contact &c : contacts_[i]) {
       const Body &o = bodies_[static_cast<std::size_t>(c.j)];
       if (!o.present) continue;
-      const double dist = norm(p - o.x);
-      if (b.R + o.R - dist > kInnerTol * settings_.tol * std::min(b.R, o.R)) {
-        normal = dist > 0 ? (1 / dist) * (p - o.x) : Vec3{1, 0, 0};
-        return true;
+      // |rel + t d| = R: the first root, for a pair that closes in.
+      const Vec3 rel = b.x - o.x;
+      const double half_b = dot(rel, d);
+      if (!(half_b < 0)) continue;
+      const double R = b.R + o.R;
+      const double q = norm2(rel) - R * R;
+      double at = 0;
+      if (q > 0) {
+        const double disc = half_b * half_b - a * q;
+        if (disc < 0) continue;
+        at = q / (-half_b + std::sqrt(disc));    // the smaller root, without cancellation
+      }
+      if (at < t) {
+        t = at;
+        stop = c.j;
       }
     }
-    return false;
-  }
-
-  // Body i moved by d, if that leaves it within its cap, admissible and
-  // clear of every present body.
-  bool step_to(std::size_t i, Vec3 d, Vec3 &normal)
-  {
-    Body &b = bodies_[i];
-    const Vec3 p = b.x + d;
-    if (norm(p - b.x0) > b.cap || !admissible(b.x, p, b.R, domain_, settings_.tol)) {
-      normal = Vec3{};
-      return false;
+    const Vec3 p = b.x + t * d;
+    if (stop >= 0) {
+      const Vec3 from = p - bodies_[static_cast<std::size_t>(stop)].x;
+      const double n = norm(from);
+      if (n > 0) normal = (1 / n) * from;
     }
-    if (blocked_at(i, p, normal)) return false;
+    if (!(t > 0) || norm(p - b.x0) > b.cap || !admissible(b.x, p, b.R, domain_, settings_.tol))
+      return 0;
     b.x = p;
-    return true;
+    return t;
   }
 
   // The zone's matrix (the seeds out) settles onto the bars as hard
-  // spheres: each, by id, steps towards its bar, or slides along the
-  // sphere that blocks it, and only to where it overlaps nothing; the
-  // steps shrink pass by pass. The room the targets left in caps against
+  // spheres: each, by id, steps towards its bar until it touches a sphere,
+  // then slides along that sphere for the rest of the step, never into an
+  // overlap; the steps shrink pass by pass. The room the targets left in caps against
   // the bars gathers away from them, where a seed can take it, and the
   // layer against the bars gets dense as in a packing grown around them.
   void settle_onto_bars(RegrowthStats &stats)
@@ -201,9 +215,10 @@ private:
         if (!(step > 1e-3 * b.R)) continue;
         const Vec3 d = (step / norm(to_bar)) * to_bar;
         Vec3 n;
-        if (step_to(i, d, n)) continue;
+        const double moved = advance(i, d, n);
+        if (moved == 1 || norm2(n) == 0) continue;
         const Vec3 slide = d - dot(d, n) * n;
-        if (norm(slide) > 1e-3 * b.R) step_to(i, (step / norm(slide)) * slide, n);
+        if (norm(slide) > 1e-3 * b.R) advance(i, (step / norm(slide)) * slide, n);
       }
     }
   }
@@ -219,7 +234,7 @@ private:
     seed.active = true;
     bool clear = false;
     for (int k = 0; k < kAloneSweeps && !clear; ++k)
-      clear = sweep(stats) <= kInnerTol * settings_.tol;
+      clear = sweep(stats) <= kClear;
     seed.active = false;
     return clear && excess_of(s) == 0;
   }
@@ -270,18 +285,19 @@ private:
     active_.clear();
   }
 
-  // True when no active sphere overlaps anything by more than tol, after
-  // FIRE left overlaps of at most `worst`: at once when they are below
-  // kUnjam of tol, else by at most kFinalSweeps projection sweeps when they
-  // are below kNearlyClear.
+  // True when no active sphere overlaps anything (by more than kClear),
+  // after FIRE left overlaps of at most `worst`: at once when that is
+  // below kClear, else, when they are below kNearlyClear, by more FIRE
+  // steps, then projection sweeps.
   bool finish_clear(double worst, RegrowthStats &stats)
   {
     bool clear = false;
-    if (worst <= kUnjam * settings_.tol) {
+    if (worst <= kClear) {
       clear = true;
     } else if (worst <= kNearlyClear) {
+      clear = relax_.run(kFinishIters, kClear, stats.sweeps) <= kClear;
       for (int k = 0; k < kFinalSweeps && !clear; ++k)
-        clear = sweep(stats) <= kInnerTol * settings_.tol;
+        clear = sweep(stats) <= kClear;
     }
     for (std::size_t i : active_)
       if (clear && excess_of(i) > 0) clear = false;
@@ -299,7 +315,7 @@ private:
       seed.scale = kStartScale + (1 - kStartScale) * step / kGrowthSteps;
       worst = relax_.run(kStepIters, kSettled, stats.sweeps);
     }
-    if (worst <= kAbort) worst = relax_.run(kRelaxIters, kUnjam * settings_.tol, stats.sweeps);
+    if (worst <= kAbort) worst = relax_.run(kRelaxIters, kClear, stats.sweeps);
     seed.scale = 1;
     const bool clear = worst <= kAbort && finish_clear(worst, stats);
     deactivate_zone(clear);
@@ -320,9 +336,9 @@ private:
       relax_.set_pull(pull);
       relax_.run(kCompactIters, 0, stats.sweeps);
       relax_.set_pull(0);
-      double worst = relax_.run(kRelaxIters, kUnjam * settings_.tol, stats.sweeps);
-      if (worst > kUnjam * settings_.tol && worst < kNearlyJammed)
-        worst = relax_.run(kRelaxMore, kUnjam * settings_.tol, stats.sweeps);
+      double worst = relax_.run(kRelaxIters, kClear, stats.sweeps);
+      if (worst > kClear && worst < kNearlyJammed)
+        worst = relax_.run(kRelaxMore, kClear, stats.sweeps);
       clear = finish_clear(worst, stats);
     }
     deactivate_zone(clear);
@@ -357,7 +373,8 @@ private:
 
   // One Gauss-Seidel sweep over the active spheres: each, by id, moves out
   // of its overlaps (its share of each against an active sphere, by
-  // mobility; all of it against any other), by half of tol more, then back
+  // mobility; all of it against any other), by tol of the smaller radius
+  // more, then back
   // within its cap; a move the walls, region or box refuse is not made.
   // Returns the largest overlap met (above what is allowed), over the
   // smaller radius.
@@ -390,7 +407,7 @@ private:
     return worst;
   }
 
-  // The overlaps of body i above tol (and above what is allowed), summed,
+  // The overlaps of body i above kClear (and above what is allowed), summed,
   // over the smaller radius of each pair.
   double excess_of(std::size_t i) const
   {
@@ -401,7 +418,7 @@ private:
       if (!o.present) continue;
       const double small = std::min(b.R, o.R);
       const double excess = (b.R + o.R - norm(b.x - o.x) - allowed(b, o, c)) / small;
-      if (excess > kInnerTol * settings_.tol) sum += excess;
+      if (excess > kClear) sum += excess;
     }
     return sum;
   }
@@ -421,11 +438,10 @@ private:
         const double r = bodies_[static_cast<std::size_t>(b.twin)].R;
         stats.volume_regrown += 4.0 / 3.0 * M_PI * (b.R * b.R * b.R - r * r * r);
         out.push_back({b.id, RecordKind::Placed, b.x, b.R});
-      } else if (!b.present) {
-        (b.seed ? stats.deleted : stats.deleted_matrix)++;
+      } else if (!b.present) {    // only a seed leaves: no matrix sphere is deleted
+        stats.deleted++;
+        stats.seeds++;
         out.push_back({b.id, RecordKind::Deleted, b.x0, b.R});
-        if (!b.seed) stats.volume_deleted_matrix += 4.0 / 3.0 * M_PI * b.R * b.R * b.R;
-        if (b.seed) stats.seeds++;
         continue;
       } else if (b.seed) {
         stats.seeds++;
@@ -439,12 +455,18 @@ private:
         stats.max_move = std::max(stats.max_move, norm(dx) / settings_.rmin);
         out.push_back({b.id, RecordKind::Pushed, dx, 0});
       }
+      // At their own radii, against everything present.
       double largest = 0;
+      bool exact = true;
       for (const Contact &c : contacts_[i]) {
         const Body &o = bodies_[static_cast<std::size_t>(c.j)];
-        if (o.present) largest = std::max(largest, (b.R + o.R - norm(b.x - o.x)) / settings_.rmin);
+        if (!o.present) continue;
+        const double overlap = b.R + o.R - norm(b.x - o.x);
+        largest = std::max(largest, overlap / settings_.rmin);
+        exact = exact && !(overlap > kRegrowthExact * std::min(b.R, o.R));
       }
       stats.max_overlap = std::max(stats.max_overlap, largest);
+      if (!exact) stats.inexact++;
     }
     return out;
   }

@@ -38,7 +38,6 @@ struct Stats {
   double max_push = 0;            // largest displacement of a pushed sphere in one call, / rmin
   std::int64_t sweeps = 0;        // rearrangement sweeps
   std::int64_t isolated = 0;      // unplaced with fewer than four spheres within `search`
-  std::int64_t matrix_deleted = 0;    // matrix spheres (not targets) deleted to make room
   std::int64_t shrunk = 0;            // relocated with a radius below its own
 };
 

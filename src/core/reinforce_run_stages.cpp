@@ -130,10 +130,8 @@ void fold_regrowth(Totals &t)
   s.shrunk -= g.shrunk_regrown;
   s.unplaced -= g.regrown;
   s.displaced += g.displaced;
-  s.matrix_deleted += g.deleted_matrix;
   s.volume_after += g.volume_regrown;
-  s.volume_removed += g.volume_deleted_matrix - g.volume_regrown;
-  s.max_overlap = std::max(s.max_overlap, g.max_overlap);
+  s.volume_removed -= g.volume_regrown;
 }
 
 std::string regrowth_line(const RegrowthStats &g, double seconds)
@@ -142,13 +140,14 @@ std::string regrowth_line(const RegrowthStats &g, double seconds)
   std::snprintf(line, sizeof line,
                 "fix reinforce/invert: regrowth: %lld targets without a void, %lld regrown at "
                 "their own radius, %lld deleted (%lld inside the bars); %lld shrunk across thin "
-                "bars, %lld regrown at their own radius; %lld matrix spheres deleted, %lld moved "
-                "(largest %.2f rmin), %lld sweeps, max overlap %.2e rmin, %.3f s\n",
+                "bars, %lld regrown at their own radius; %lld matrix spheres moved (largest %.2f "
+                "rmin), %lld sweeps, max overlap %.2e rmin (%lld spheres above %.0e of the "
+                "smaller radius), %.3f s\n",
                 static_cast<long long>(g.seeds), static_cast<long long>(g.regrown),
                 static_cast<long long>(g.deleted), static_cast<long long>(g.displaced),
                 static_cast<long long>(g.shrunk_seeds), static_cast<long long>(g.shrunk_regrown),
-                static_cast<long long>(g.deleted_matrix), static_cast<long long>(g.moved),
-                g.max_move, static_cast<long long>(g.sweeps), g.max_overlap, seconds);
+                static_cast<long long>(g.moved), g.max_move, static_cast<long long>(g.sweeps),
+                g.max_overlap, static_cast<long long>(g.inexact), kRegrowthExact, seconds);
   return line;
 }
 
