@@ -1,5 +1,6 @@
 // The table of the totals: every f_ID index once, each field read and
 // written where the output vector and the reductions expect it.
+#include "reinforce_run_stages.h"
 #include "reinforce_totals.h"
 
 #include <gtest/gtest.h>
@@ -48,4 +49,29 @@ TEST(Totals, FieldsAreDistinctAndOutputWhereTheTableSays)
   EXPECT_EQ(out[15], static_cast<double>(t.stats.displaced));
   EXPECT_EQ(out[25], static_cast<double>(t.stats.shrunk));
   EXPECT_EQ(out[26], static_cast<double>(t.regrowth.shrunk_regrown));
+  EXPECT_EQ(out[6], t.stats.max_overlap);
+  EXPECT_EQ(out[19], static_cast<double>(t.regrowth.inexact));
+  EXPECT_EQ(out[22], t.regrowth.max_overlap);
+  EXPECT_EQ(out[27], t.relocation_max_overlap);
+}
+
+// The summary's largest overlap is the relocation's or the regrowth's,
+// whichever is larger; the relocation's own is kept apart (f_ID[28]).
+TEST(Totals, RegrowthFoldedIntoTheResidualOverlap)
+{
+  Totals t;
+  t.stats.max_overlap = 1e-14;
+  t.regrowth.max_overlap = 2e-13;
+  t.regrowth.regrown = 3;
+  t.stats.unplaced = 5;
+  fold_regrowth(t);
+  EXPECT_EQ(t.stats.max_overlap, 2e-13);
+  EXPECT_EQ(t.relocation_max_overlap, 1e-14);
+  EXPECT_EQ(t.stats.unplaced, 2);
+  Totals u;
+  u.stats.max_overlap = 3e-14;
+  u.regrowth.max_overlap = 0;
+  fold_regrowth(u);
+  EXPECT_EQ(u.stats.max_overlap, 3e-14);
+  EXPECT_EQ(u.relocation_max_overlap, 3e-14);
 }

@@ -92,7 +92,9 @@ int Rearrangement::undo()
 
 bool Rearrangement::push_apart(const std::vector<int> &active, std::vector<int> &next)
 {
-  const double limit = 0.5 * s_.tol, gap = 0.5 * s_.tol;
+  // Pushed until exact but for rounding (whatever tol), each push
+  // separating the pair by tol / 2 of the smaller radius beyond contact.
+  const double limit = kPushedClear, gap = 0.5 * s_.tol;
   for (int i : active) {
     for (int j : scene_.overlapping(i, limit)) {
       const double ri = scene_.r(i), rj = scene_.r(j);

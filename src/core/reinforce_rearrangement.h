@@ -18,6 +18,9 @@ namespace reinforce {
 // Bounds of one attempt: sweeps over the pushed spheres, spheres pushed.
 constexpr int kMaxSweeps = 40;
 constexpr std::size_t kMaxPushed = 48;
+// The pushes go on until no pair with a moved sphere overlaps by more than
+// this share of the smaller radius.
+constexpr double kPushedClear = 1e-13;
 
 class Rearrangement {
 public:
@@ -25,7 +28,8 @@ public:
 
   // Puts a sphere of the target's radius r0 (atom `id`, old centre x0) at
   // c and pushes overlapping spheres apart along their line of centres
-  // until no pair involving a moved sphere overlaps by more than tol / 2.
+  // until no pair involving a moved sphere overlaps by more than
+  // kPushedClear of the smaller radius.
   // Rebar, atoms outside the fix group, kept targets and matrix spheres
   // farther than `zone` from the bars never move; no pushed sphere moves
   // more than `push`; the new sphere stays within r0 + search of x0; every

@@ -151,7 +151,8 @@ private:
 
   // Body i moved along d as far as it goes, at most all of d: up to the
   // first present body it would touch (then tangent to it, exact but for
-  // rounding), staying within its cap and admissible, else not at all.
+  // rounding), staying within its cap and admissible, else not at all; a
+  // body that overlaps one where it is (the packing's own overlap) stays.
   // Returns the share of d moved; `normal` points from the body that
   // stopped it to where it stopped (zero when none did).
   double advance(std::size_t i, Vec3 d, Vec3 &normal)
@@ -167,9 +168,10 @@ private:
       if (!o.present) continue;
       // |rel + t d| = R: the first root, for a pair that closes in.
       const Vec3 rel = b.x - o.x;
+      const double R = b.R + o.R;
+      if (R - norm(rel) > kClear * std::min(b.R, o.R)) return 0;
       const double half_b = dot(rel, d);
       if (!(half_b < 0)) continue;
-      const double R = b.R + o.R;
       const double q = norm2(rel) - R * R;
       double at = 0;
       if (q > 0) {
@@ -233,8 +235,7 @@ private:
     active_.assign(1, s);
     seed.active = true;
     bool clear = false;
-    for (int k = 0; k < kAloneSweeps && !clear; ++k)
-      clear = sweep(stats) <= kClear;
+    for (int k = 0; k < kAloneSweeps && !clear; ++k) clear = sweep(stats) <= kClear;
     seed.active = false;
     return clear && excess_of(s) == 0;
   }
@@ -296,8 +297,7 @@ private:
       clear = true;
     } else if (worst <= kNearlyClear) {
       clear = relax_.run(kFinishIters, kClear, stats.sweeps) <= kClear;
-      for (int k = 0; k < kFinalSweeps && !clear; ++k)
-        clear = sweep(stats) <= kClear;
+      for (int k = 0; k < kFinalSweeps && !clear; ++k) clear = sweep(stats) <= kClear;
     }
     for (std::size_t i : active_)
       if (clear && excess_of(i) > 0) clear = false;

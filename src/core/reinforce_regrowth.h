@@ -32,8 +32,8 @@ struct RegrowthStats {
   std::int64_t moved = 0;             // matrix spheres moved
   std::int64_t sweeps = 0;            // projection sweeps over a block's zone
   double volume_regrown = 0;          // volume the regrown seeds added
-  double max_overlap = 0;    // largest overlap of a regrown or moved sphere, / rmin
-  double max_move = 0;       // largest displacement of a matrix sphere, / rmin
+  double max_overlap = 0;             // largest overlap of a regrown or moved sphere, / rmin
+  double max_move = 0;                // largest displacement of a matrix sphere, / rmin
 };
 
 // A seed moves at most this share of the width from where it was; a

@@ -132,6 +132,8 @@ void fold_regrowth(Totals &t)
   s.displaced += g.displaced;
   s.volume_after += g.volume_regrown;
   s.volume_removed -= g.volume_regrown;
+  t.relocation_max_overlap = s.max_overlap;
+  s.max_overlap = std::max(s.max_overlap, g.max_overlap);
 }
 
 std::string regrowth_line(const RegrowthStats &g, double seconds)

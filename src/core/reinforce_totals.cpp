@@ -47,6 +47,8 @@ const std::array<TotalsField, kTotalsFields> &totals_fields()
       {"relocated shrunk", Reduction::Sum, 26, REINFORCE_TOTAL(stats.shrunk)},
       {"shrunk across thin bars and regrown", Reduction::Sum, 27,
        REINFORCE_TOTAL(regrowth.shrunk_regrown)},
+      {"largest overlap of the relocation / rmin", Reduction::Global, 28,
+       REINFORCE_TOTAL(relocation_max_overlap)},
       {"shrunk across thin bars", Reduction::Sum, 0, REINFORCE_TOTAL(regrowth.shrunk_seeds)},
       {"unplaced", Reduction::Sum, 0, REINFORCE_TOTAL(stats.unplaced)},
       {"unplaced with no neighbours", Reduction::Sum, 0, REINFORCE_TOTAL(stats.isolated)},

@@ -1,6 +1,6 @@
 // The totals of one invocation and the one table of their fields: how
 // each is combined over the processes, and where the fix's global vector
-// (f_ID[1] to f_ID[27]) reports it (docs/fix_reinforce_invert.rst,
+// (f_ID[1] to f_ID[28]) reports it (docs/fix_reinforce_invert.rst,
 // "Output"). The reductions and the output vector read the table.
 #pragma once
 
@@ -23,6 +23,9 @@ struct Totals {
   double packing_overlaps = 0, packing_max_overlap = 0;
   RegrowthStats regrowth;
   double regrowth_seconds = 0;
+  // The relocation's largest overlap alone (stats.max_overlap holds the
+  // regrowth's too), over rmin.
+  double relocation_max_overlap = 0;
 };
 
 // Sum or Max: each process's value, combined over the processes. Global:
@@ -37,8 +40,8 @@ struct TotalsField {
   void (*set)(Totals &, double);
 };
 
-constexpr int kOutputSize = 27;
-constexpr std::size_t kTotalsFields = 34;
+constexpr int kOutputSize = 28;
+constexpr std::size_t kTotalsFields = 35;
 const std::array<TotalsField, kTotalsFields> &totals_fields();
 
 // The fix's global vector, f_ID[1] to f_ID[27], in the order of the

@@ -27,8 +27,8 @@
 // Overlap of spheres i, j: d = r_i + r_j - |x_i - x_j| (minimum image in
 // periodic dimensions, "pp" in the BOX BOUNDS line); a pair overlaps when
 // d > tol * min(r_i, r_j), a pair of a moved sphere when d > overlap-tol *
-// min(r_i, r_j) (the fix leaves them exact but for rounding). Exit status: 0 every check passed, 1 a check
-// failed, 2 bad usage or unreadable input.
+// min(r_i, r_j) (the fix leaves them exact but for rounding). Exit status: 0 every check passed, 1
+// a check failed, 2 bad usage or unreadable input.
 #include <algorithm>
 #include <cctype>
 #include <cmath>
