@@ -183,6 +183,39 @@ TEST(Invocation, LogsARaisedGhostCutoff)
   EXPECT_EQ(h.logged.front(), said.front());
 }
 
+// A stage that runs long says how far it got before each round after the
+// first, at most every 5 s: here every call of the clock takes 10 s.
+TEST(Invocation, LongStagesLogTheirProgress)
+{
+  struct SlowHost : MemoryHost {
+    double clock = 0;
+    double wall_time() override { return clock += 10; }
+  } h;
+  fill(h, 1);
+  const Totals t = run_invocation(h, parse_fix_arguments({"0", "bars"}));
+  ASSERT_GE(t.rounds, 3);
+  int nth = 1, rounds = 0;
+  std::size_t before = 0, blocks = 0, last_before = 0;
+  for (const std::string &line : h.logged) {
+    if (line.find("fix reinforce/invert: relocation: round") != 0) continue;
+    double seconds = 0;
+    ASSERT_EQ(std::sscanf(line.c_str(),
+                          "fix reinforce/invert: relocation: round %d of %d begins after %lf s; "
+                          "the rounds before it hold %zu of %zu blocks",
+                          &nth, &rounds, &seconds, &before, &blocks),
+              5)
+        << line;
+    EXPECT_EQ(rounds, t.rounds);
+    EXPECT_GT(seconds, 0);
+    EXPECT_GT(before, last_before);
+    EXPECT_LT(before, blocks);
+    last_before = before;
+  }
+  EXPECT_EQ(nth, t.rounds);    // every round after the first said so
+  // A quick clock says nothing of the kind (RelocatesDeletesAndReports:
+  // the schedule and summary lines only).
+}
+
 // The message of the error an invocation stops with ("" when none): the
 // exact text, so that a wrong error cannot pass for the right one.
 static std::string failure_of(MemoryHost &h, const std::vector<std::string> &args)

@@ -16,6 +16,7 @@ public:
   // block's seeds are regrown as one zone).
   RegrowthStage(const Settings &settings, const Domain &domain, const BlockLattice &lattice,
                 double width, double matrix_rmax, double largest_r, RegrowthStats &stats);
+  const char *name() const override { return "regrowth"; }
   int passes() const override { return 1; }
   int pass_of(const Particle &p) const override { return p.role == Role::Target ? 0 : -1; }
   double read_reach() const override { return read_; }

@@ -23,6 +23,7 @@ public:
   // processes; read: what a round reads around a target.
   RelocationStage(const Settings &settings, const Domain &domain, Unplaced unplaced,
                   double target_rmin, double target_rmax, double read, Stats &stats);
+  const char *name() const override { return "relocation"; }
   int passes() const override { return classes_; }
   int pass_of(const Particle &p) const override;
   double read_reach() const override { return read_; }

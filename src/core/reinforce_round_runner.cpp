@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <unordered_map>
 
@@ -87,6 +88,10 @@ bool touches(const BlockLattice &lattice, const Domain &box, const BlockKey &key
       }
   return false;
 }
+
+// A stage that runs longer than this (seconds) says on the log how far it
+// got, at most this often.
+constexpr double kProgressEvery = 5;
 
 }    // namespace
 
@@ -185,11 +190,18 @@ public:
   RoundsDone run()
   {
     RoundsDone done;
+    const double start = host_.wall_time();
+    double said = start;
     int previous = -1;    // the round whose others' results are still to collect
     for (std::size_t round = 0; round < per_round_.size(); ++round) {
       if (per_round_[round] == 0) continue;
       done.rounds++;
       const int r = static_cast<int>(round);
+      const double now = host_.wall_time();
+      if (done.rounds > 1 && now - said >= kProgressEvery) {
+        say_progress(r, done.rounds, now - start);
+        said = now;
+      }
       const auto first =
           std::lower_bound(my_blocks_.begin(), my_blocks_.end(), BlockKey{r, 0, 0, 0});
       const auto last = std::lower_bound(first, my_blocks_.end(), BlockKey{r + 1, 0, 0, 0});
@@ -221,6 +233,28 @@ public:
   }
 
 private:
+  // Progress of a long stage, from this process's side (the log is the
+  // first process's): it begins its `nth` round with work, `round`; the
+  // blocks of the rounds before it are done here, and elsewhere but for
+  // those of the round just before.
+  void say_progress(int round, int nth, double seconds) const
+  {
+    int rounds = 0;
+    for (double w : per_round_) rounds += w > 0;
+    std::size_t before = 0, blocks = 0;
+    for (const std::vector<BlockKey> *list : {&my_blocks_, &other_blocks_})
+      for (const BlockKey &k : *list) {
+        ++blocks;
+        before += k[0] < round;
+      }
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "fix reinforce/invert: %s: round %d of %d begins after %.1f s; the rounds "
+                  "before it hold %zu of %zu blocks\n",
+                  stage_.name(), nth, rounds, seconds, before, blocks);
+    host_.log(line);
+  }
+
   // The round of a particle that is the stage's work and whose block's
   // centre this process owns (each unit of work is done by that process),
   // or -1.

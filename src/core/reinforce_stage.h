@@ -24,6 +24,8 @@ struct StageResult {
 class Stage {
 public:
   virtual ~Stage() = default;
+  // What the log calls it ("relocation", "regrowth").
+  virtual const char *name() const = 0;
   // Passes over the colours: round = pass * colours + colour.
   virtual int passes() const = 0;
   // The pass of a particle that is this stage's work, or -1.

@@ -48,6 +48,8 @@ double num(int argc, char **argv, int i)
 int main(int argc, char **argv)
 {
   if (argc < 2) usage("no output file");
+  // An option where the file belongs is a mistake, not a file name.
+  if (argv[1][0] == '-') usage("the first argument is the output file, not an option");
   double box[6] = {0, 1, 0, 1, 0, 1}, rmin = 0.02, rmax = 0.04, spacing = 0, offset[3] = {0, 0, 0};
   unsigned seed = 1;
   bool fcc = false;
