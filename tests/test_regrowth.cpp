@@ -97,8 +97,8 @@ TEST(Regrowth, SeedWithRoomIsPutBackAtItsRadius)
   ASSERT_EQ(rec.size(), 1u);
   EXPECT_EQ(rec[0].kind, RecordKind::Placed);
   EXPECT_EQ(rec[0].r, 0.1);
-  EXPECT_GE(norm(rec[0].v), 0.2 - 1e-7);                                     // clear of the bar
-  EXPECT_LE(norm(rec[0].v - Vec3{0.15, 0, 0}), kRegrowthMoveShare * 0.3);    // its cap
+  EXPECT_GE(norm(rec[0].v), 0.2 - 1e-7);    // clear of the bar
+  EXPECT_LE(norm(rec[0].v - Vec3{0.15, 0, 0}), regrowth_policy::kMoveShare * 0.3);    // its cap
   EXPECT_LE(largest_overlap_after(reads, rec), 1e-6);
   EXPECT_EQ(stats.regrown, 1);
   EXPECT_EQ(stats.deleted, 0);
@@ -116,7 +116,8 @@ TEST(Regrowth, ZoneMovesAndStaysClear)
   EXPECT_EQ(rec[1].kind, RecordKind::Pushed);
   EXPECT_EQ(rec[1].id, 3);
   EXPECT_GT(norm(rec[1].v), 0);
-  EXPECT_LE(norm(rec[1].v), kRegrowthMoveShare * 0.3 * (1 - 0.21 / 0.3) + 1e-12);    // its cap
+  EXPECT_LE(norm(rec[1].v),
+            regrowth_policy::kMoveShare * 0.3 * (1 - 0.21 / 0.3) + 1e-12);    // its cap
   EXPECT_LE(largest_overlap_after(reads, rec), 1e-6);
   EXPECT_EQ(stats.moved, 1);
   EXPECT_GT(stats.max_move, 0);

@@ -10,49 +10,7 @@ namespace reinforce {
 
 namespace {
 
-// A moved sphere ends overlapping nothing by more than this share of the
-// smaller radius: exact but for rounding (a tenth of kRegrowthExact),
-// whatever tol is.
-constexpr double kClear = 1e-13;
-// A seed starts at this share of its radius and grows to its own in
-// kGrowthSteps equal steps, each followed by at most kStepIters FIRE steps
-// of the whole zone (fewer once no overlap exceeds kSettled of a radius);
-// a growth whose overlaps stay above kAbort of a radius after a step is
-// given up. Then at most kRelaxIters FIRE steps, until no overlap exceeds
-// kClear (the zone unjams), else, when the overlaps are below
-// kNearlyClear, at most kFinishIters more, then kFinalSweeps projection
-// sweeps.
-constexpr double kStartScale = 0.5;
-constexpr int kGrowthSteps = 10;
-constexpr int kStepIters = 100;
-constexpr double kSettled = 1e-4;
-constexpr double kAbort = 0.05;
-constexpr int kRelaxIters = 2000;
-constexpr double kNearlyClear = 2e-5;
-constexpr int kFinishIters = 4000;
-constexpr int kFinalSweeps = 200;
-// A seed tries at most kStarts places: the least overlapped points near
-// where it was. It fits alone at any of them, or grows from the first
-// kGrowthStarts of them.
-constexpr std::size_t kStarts = 4;
-constexpr std::size_t kGrowthStarts = 3;
-// A start overlapping more than this share of the seed's radius is not
-// tried: the zone cannot absorb that much.
-constexpr double kWorstStart = 0.5;
-// Settling onto the bars: kSettlePasses passes, the first stepping a
-// sphere by kSettleStep of its radius (times its mobility) towards its
-// bar, the later ones less. A seed alone moves out of its overlaps in at
-// most kAloneSweeps sweeps.
-constexpr int kSettlePasses = 30;
-constexpr double kSettleStep = 0.1;
-constexpr int kAloneSweeps = 30;
-// Compaction: the zone's matrix pulled towards its bar (kPull of its
-// radius, times its mobility, as a force) for kCompactIters FIRE steps,
-// then relaxed without the pull for kRelaxIters (kRelaxMore more when its
-// overlaps are below kNearlyJammed); up to kCompactTries, the pull times
-// kPullDecay each; kept only when the zone ends clear.
-constexpr double kPull = 0.1, kPullDecay = 0.3, kNearlyJammed = 1e-3;
-constexpr int kCompactTries = 3, kCompactIters = 1000, kRelaxMore = 4000;
+using namespace regrowth_policy;
 
 // The zone of one block's seeds: its bodies (seeds, movable matrix
 // spheres, frozen spheres around them), their possible contacts, and the
@@ -108,7 +66,7 @@ private:
   std::vector<Vec3> starts(std::size_t s) const
   {
     const Body &seed = bodies_[s];
-    const double h = 0.25 * seed.R;
+    const double h = kStartSpacing * seed.R;
     const int n = static_cast<int>(std::floor(seed.cap / h));
     // The present spheres a point within the cap can touch.
     std::vector<std::pair<Vec3, double>> near;
@@ -214,13 +172,13 @@ private:
         const Vec3 to_bar = bar.x - b.x;
         const double gap = norm(to_bar) - bar.R - b.R;
         const double step = std::min(share * b.R * b.w_zone, gap);
-        if (!(step > 1e-3 * b.R)) continue;
+        if (!(step > kSettleSmallest * b.R)) continue;
         const Vec3 d = (step / norm(to_bar)) * to_bar;
         Vec3 n;
         const double moved = advance(i, d, n);
         if (moved == 1 || norm2(n) == 0) continue;
         const Vec3 slide = d - dot(d, n) * n;
-        if (norm(slide) > 1e-3 * b.R) advance(i, (step / norm(slide)) * slide, n);
+        if (norm(slide) > kSettleSmallest * b.R) advance(i, (step / norm(slide)) * slide, n);
       }
     }
   }

@@ -13,6 +13,7 @@
 
 #include "reinforce_domain.h"
 #include "reinforce_particle.h"
+#include "reinforce_regrowth_policy.h"
 #include "reinforce_settings.h"
 #include "reinforce_round_records.h"
 
@@ -28,24 +29,13 @@ struct RegrowthStats {
   std::int64_t deleted = 0;           // of them, deleted (displaced included)
   std::int64_t shrunk_seeds = 0;      // targets placed shrunk across thin bars, taken up again
   std::int64_t shrunk_regrown = 0;    // of them, put back at their own radius
-  std::int64_t inexact = 0;           // moved spheres left overlapping (kRegrowthExact)
-  std::int64_t moved = 0;             // matrix spheres moved
-  std::int64_t sweeps = 0;            // projection sweeps over a block's zone
-  double volume_regrown = 0;          // volume the regrown seeds added
-  double max_overlap = 0;             // largest overlap of a regrown or moved sphere, / rmin
-  double max_move = 0;                // largest displacement of a matrix sphere, / rmin
+  std::int64_t inexact = 0;     // moved spheres left overlapping (regrowth_policy::kRegrowthExact)
+  std::int64_t moved = 0;       // matrix spheres moved
+  std::int64_t sweeps = 0;      // projection sweeps over a block's zone
+  double volume_regrown = 0;    // volume the regrown seeds added
+  double max_overlap = 0;       // largest overlap of a regrown or moved sphere, / rmin
+  double max_move = 0;          // largest displacement of a matrix sphere, / rmin
 };
-
-// A seed moves at most this share of the width from where it was; a
-// matrix sphere at distance d from the nearest seed at most that times
-// (1 - d / width): nothing moves at the zone's edge, so it blends into the
-// frozen far field, and nothing leaves the zone.
-constexpr double kRegrowthMoveShare = 0.9;
-
-// A sphere the regrowth moved or placed is left overlapping when a pair
-// of it overlaps by more than this share of the smaller radius (more than
-// rounding: it keeps a gap of tol / 2 of that radius).
-constexpr double kRegrowthExact = 1e-12;
 
 // How far the regrowth of one seed reaches from its centre: it moves
 // spheres whose centres lie within `write` (before and after) and reads

@@ -36,7 +36,7 @@ std::vector<Body> zone_bodies(const std::vector<Particle> &reads,
     b.movable = p.role == Role::Matrix && p.pushable && !p.other_rebar && nearest < width;
     if (b.movable) {
       b.w_zone = 1 - nearest / width;
-      b.cap = kRegrowthMoveShare * width * b.w_zone;
+      b.cap = regrowth_policy::kMoveShare * width * b.w_zone;
       copies[b.id]++;
     }
     bodies.push_back(b);
@@ -51,7 +51,7 @@ std::vector<Body> zone_bodies(const std::vector<Particle> &reads,
     b.R = reads[s].r;
     b.id = reads[s].id;
     b.seed = b.movable = true;
-    b.cap = kRegrowthMoveShare * width;
+    b.cap = regrowth_policy::kMoveShare * width;
     bodies.push_back(b);
   }
   // Sweeps go by id (then place: frozen images share one), whatever the

@@ -39,7 +39,7 @@ struct Contact {
 // The bodies of the zone of `seeds` (indices of Target particles of
 // `reads`) in id order (then place): the seeds; the matrix spheres of the
 // fix group within `width` of a seed, movable within their caps
-// (kRegrowthMoveShare); everything else frozen; other Target particles
+// (regrowth_policy::kMoveShare); everything else frozen; other Target particles
 // are vacant and left out. A seed that shares its id with a present
 // sphere (a target the relocation placed shrunk) is its twin. Each movable
 // matrix sphere knows its nearest rebar sphere.

@@ -149,7 +149,8 @@ std::string regrowth_line(const RegrowthStats &g, double seconds)
                 static_cast<long long>(g.deleted), static_cast<long long>(g.displaced),
                 static_cast<long long>(g.shrunk_seeds), static_cast<long long>(g.shrunk_regrown),
                 static_cast<long long>(g.moved), g.max_move, static_cast<long long>(g.sweeps),
-                g.max_overlap, static_cast<long long>(g.inexact), kRegrowthExact, seconds);
+                g.max_overlap, static_cast<long long>(g.inexact), regrowth_policy::kRegrowthExact,
+                seconds);
   return line;
 }
 

@@ -1,23 +1,14 @@
 #include "reinforce_soft_relaxation.h"
 
 #include "reinforce_boundaries.h"
+#include "reinforce_regrowth_policy.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace reinforce {
 
-namespace {
-
-// FIRE (soft spheres: harmonic overlap energy, unit stiffness and mass):
-// its time step (start, largest), mixing, and the largest step of a
-// sphere in one iteration, as a share of its radius.
-constexpr double kFireDt = 0.1, kFireDtMax = 0.3, kFireAlpha = 0.1;
-constexpr double kFireStep = 0.05;
-// The skin of its neighbour lists, as a share of the largest movable radius.
-constexpr double kSkin = 0.25;
-
-}    // namespace
+using namespace regrowth_policy;
 
 SoftRelaxation::SoftRelaxation(std::vector<Body> &bodies,
                                const std::vector<std::vector<Contact>> &contacts,
@@ -113,13 +104,13 @@ double SoftRelaxation::run(int iters, double done, std::int64_t &steps)
     if (power > 0) {
       if (fn > 0)
         for (std::size_t i : active_) v[i] = (1 - alpha) * v[i] + (alpha * vn / fn) * f[i];
-      if (++positive > 5) {
-        dt = std::min(dt * 1.1, kFireDtMax);
-        alpha *= 0.99;
+      if (++positive > kFireDelay) {
+        dt = std::min(dt * kFireGrow, kFireDtMax);
+        alpha *= kFireAlphaDecay;
       }
     } else {
       for (std::size_t i : active_) v[i] = Vec3{};
-      dt *= 0.5;
+      dt *= kFireShrink;
       alpha = kFireAlpha;
       positive = 0;
     }
