@@ -295,6 +295,40 @@ TEST(FixOptions, RegrowWidthOrNo)
   EXPECT_NO_THROW(parse_fix_arguments({"0", "bars", "regrow", "no", "unplaced", "keep"}));
 }
 
+// grow: the regrowth's seeds one by one (each, the default) or together,
+// whose zone is then 5 matrix radii wide unless regrow gives a width; an
+// error where there is no regrowth.
+TEST(FixOptions, GrowEachOrTogether)
+{
+  const Settings each = make_settings(parse_fix_arguments({"0", "bars"}), 0.1, 0.3, 100);
+  EXPECT_FALSE(each.grow_together);
+  const Settings named =
+      make_settings(parse_fix_arguments({"0", "bars", "grow", "each"}), 0.1, 0.3, 100);
+  EXPECT_FALSE(named.grow_together);
+  EXPECT_DOUBLE_EQ(named.regrow, 0.9);
+  const Settings together =
+      make_settings(parse_fix_arguments({"0", "bars", "grow", "together"}), 0.1, 0.3, 100);
+  EXPECT_TRUE(together.grow_together);
+  EXPECT_DOUBLE_EQ(together.regrow, 1.5);
+  EXPECT_EQ(make_settings(parse_fix_arguments({"0", "bars", "grow", "together", "regrow", "0.5"}),
+                          0.1, 0.3, 100)
+                .regrow,
+            0.5);
+  EXPECT_TRUE(make_settings(parse_fix_arguments(
+                                {"0", "bars", "size", "fit", "regrow", "yes", "grow", "together"}),
+                            0.1, 0.3, 100)
+                  .grow_together);
+  const std::string I = "Illegal fix reinforce/invert command: ";
+  EXPECT_EQ(error_of({"0", "bars", "grow", "both"}),
+            I + "grow must be 'each' or 'together', got 'both'");
+  EXPECT_EQ(error_of({"0", "bars", "grow"}), I + "missing value for keyword 'grow'");
+  const std::string off = I + "grow sets how the regrowth grows its seeds, and the regrowth is "
+                              "off (regrow no, unplaced keep, or size fit without regrow)";
+  EXPECT_EQ(error_of({"0", "bars", "grow", "together", "regrow", "no"}), off);
+  EXPECT_EQ(error_of({"0", "bars", "unplaced", "keep", "grow", "each"}), off);
+  EXPECT_EQ(error_of({"0", "bars", "size", "fit", "grow", "together"}), off);
+}
+
 TEST(FixOptions, ImpossibleRadiusRangeFromScene)
 {
   const FixOptions o = parse_fix_arguments({"0", "bars"});

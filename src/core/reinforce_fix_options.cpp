@@ -135,6 +135,11 @@ const Keyword kKeywords[] = {
        o.regrow = parse_double(v[0], "regrow");
        if (!(o.regrow > 0)) throw OptionError(kIllegal + "regrow must be > 0, 'yes' or 'no'");
      }},
+    {"grow", 1,
+     [](FixOptions &o, const std::string *v) {
+       o.grow_set = true;
+       o.grow_together = parse_either("grow", v[0], "each", "together");
+     }},
     {"walls", 1,
      [](FixOptions &o, const std::string *v) {
        o.walls_ignore = parse_either("walls", v[0], "check", "ignore");
@@ -164,6 +169,12 @@ FixOptions parse_fix_arguments(const std::vector<std::string> &args)
   if (o.regrow_set && o.keep_unplaced)
     throw OptionError(kIllegal + "regrow makes room for the targets unplaced keep leaves "
                                  "where they are: use one of them");
+  const bool regrowth =
+      !o.regrow_off && !o.keep_unplaced && (o.regrow_set || o.size == SizeMode::Keep);
+  if (o.grow_set && !regrowth)
+    throw OptionError(kIllegal + "grow sets how the regrowth grows its seeds, and the "
+                                 "regrowth is off (regrow no, unplaced keep, or size fit "
+                                 "without regrow)");
   return o;
 }
 
@@ -202,7 +213,11 @@ Settings make_settings(const FixOptions &o, double matrix_rmin, double matrix_rm
   // shell of neighbours of a seed (docs/design.md, "Regrowth").
   const bool regrow =
       !o.regrow_off && !o.keep_unplaced && (o.regrow_set || o.size == SizeMode::Keep);
-  s.regrow = regrow ? std::min(o.regrow > 0 ? o.regrow : 3 * matrix_rmax, bound) : 0;
+  // Grown together, the seeds need room from a wider zone: measured on the
+  // quality scenes, 5 radii put back the most (docs/design.md, "Regrowth").
+  const double width = (o.grow_together ? 5 : 3) * matrix_rmax;
+  s.regrow = regrow ? std::min(o.regrow > 0 ? o.regrow : width, bound) : 0;
+  s.grow_together = o.grow_together;
   return s;
 }
 

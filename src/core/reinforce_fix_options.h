@@ -46,6 +46,11 @@ struct FixOptions {
   bool regrow_set = false;
   bool regrow_off = false;
   double regrow = 0;
+  // grow each (the default) or together: the regrowth's seeds one by one,
+  // or a block's all at once (its default width then 5 * the matrix's
+  // largest radius).
+  bool grow_set = false;
+  bool grow_together = false;
 };
 
 // Smallest accepted `tol`: below it the rounding of coordinates (and of the

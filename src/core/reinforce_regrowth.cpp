@@ -46,6 +46,7 @@ public:
       }
     settle_onto_bars(stats);
     compact(stats);
+    if (settings_.grow_together) waiting = grow_together(waiting, stats);
     for (std::size_t i : waiting) {
       const int twin = bodies_[i].twin;
       // A shrunk sphere that may not move (beyond the zone, an image) stays.
@@ -215,6 +216,123 @@ private:
     if (!clear) seed.x = seed.x0;
     seed.present = clear;
     seed.placed = clear;
+  }
+
+  // The seeds of `waiting` (not shrunk ones) all at once: each, by id, goes
+  // back where it fits alone; the rest start at their least overlapped
+  // place, at kStartScale of their radius, and grow together while the
+  // whole zone relaxes. Whenever the zone jams (an overlap above kAbort after
+  // a growth step, above kNearlyJammed after kJudgeIters steps once grown),
+  // the seed that overlaps most is given up; then the zone relaxes to
+  // kClear, giving up one more seed at each try that does not end clear.
+  // Returns the shrunk seeds, left for grow_seed.
+  std::vector<std::size_t> grow_together(const std::vector<std::size_t> &waiting,
+                                         RegrowthStats &stats)
+  {
+    std::vector<std::size_t> growing, shrunk;
+    std::vector<Vec3> first;
+    for (std::size_t i : waiting) {
+      Body &seed = bodies_[i];
+      if (seed.twin >= 0) {
+        shrunk.push_back(i);
+        continue;
+      }
+      seed.present = true;
+      const std::vector<Vec3> places = starts(i);
+      for (std::size_t k = 0; k < places.size() && !seed.placed; ++k)
+        seed.placed = fits_alone(i, places[k], stats);
+      seed.present = seed.placed;
+      if (seed.placed || places.empty()) {
+        if (!seed.placed) seed.x = seed.x0;
+        continue;
+      }
+      seed.x = seed.x0;
+      growing.push_back(i);
+      first.push_back(places.front());
+    }
+    if (growing.empty()) return shrunk;
+    for (std::size_t n = 0; n < growing.size(); ++n) {
+      Body &seed = bodies_[growing[n]];
+      seed.present = true;
+      seed.x = first[n];
+      seed.scale = kStartScale;
+    }
+    activate_zone();
+    double worst = 0;
+    for (int step = 0; step <= kGrowthSteps && !growing.empty(); ++step) {
+      for (std::size_t i : growing)
+        bodies_[i].scale = kStartScale + (1 - kStartScale) * step / kGrowthSteps;
+      worst = relax_.run(kStepIters, kSettled, stats.sweeps);
+      while (worst > kAbort && !growing.empty()) {
+        give_up(most_overlapped(growing), growing);
+        worst = relax_.run(kStepIters, kSettled, stats.sweeps);
+      }
+    }
+    for (;;) {
+      worst = relax_.run(kJudgeIters, kClear, stats.sweeps);
+      if (!(worst > kNearlyJammed) || growing.empty()) break;
+      give_up(most_overlapped(growing), growing);
+    }
+    bool clear = false;
+    for (;;) {
+      worst = relax_.run(kRelaxIters, kClear, stats.sweeps);
+      if (worst > kClear && worst < kNearlyJammed)
+        worst = relax_.run(kRelaxMore, kClear, stats.sweeps);
+      clear = finish_clear(worst, stats);
+      if (clear || growing.empty()) break;
+      give_up(most_overlapped(growing), growing);
+    }
+    deactivate_zone(clear);
+    for (std::size_t i : growing) {
+      Body &seed = bodies_[i];
+      seed.placed = seed.present = clear;
+      if (!clear) seed.x = seed.x0;
+    }
+    return shrunk;
+  }
+
+  // The deepest overlap of body i at its radius now, over the smaller radius.
+  double deepest(std::size_t i) const
+  {
+    const Body &b = bodies_[i];
+    double most = 0;
+    for (const Contact &c : contacts_[i]) {
+      const Body &o = bodies_[static_cast<std::size_t>(c.j)];
+      if (!o.present) continue;
+      const double ri = radius(b), rj = radius(o);
+      most = std::max(most, (ri + rj - norm(b.x - o.x)) / std::min(ri, rj));
+    }
+    return most;
+  }
+
+  // Of the growing seeds, the one that overlaps most (the first of equals).
+  std::size_t most_overlapped(const std::vector<std::size_t> &growing) const
+  {
+    std::size_t pick = growing.front();
+    double most = -INFINITY;
+    for (std::size_t i : growing) {
+      const double d = deepest(i);
+      if (d > most) {
+        most = d;
+        pick = i;
+      }
+    }
+    return pick;
+  }
+
+  // Growing seed s given up: it leaves the zone and the active spheres.
+  void give_up(std::size_t s, std::vector<std::size_t> &growing)
+  {
+    const auto at = std::find(active_.begin(), active_.end(), s);
+    if (at != active_.end()) {
+      saved_.erase(saved_.begin() + (at - active_.begin()));
+      active_.erase(at);
+    }
+    Body &seed = bodies_[s];
+    seed.active = seed.present = false;
+    seed.scale = 1;
+    seed.x = seed.x0;
+    growing.erase(std::find(growing.begin(), growing.end(), s));
   }
 
   // The zone's present movable spheres made active (in id order), their

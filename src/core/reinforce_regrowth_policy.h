@@ -61,6 +61,10 @@ constexpr int kRelaxIters = 2000;
 constexpr double kNearlyClear = 2e-5;
 constexpr int kFinishIters = 4000;
 constexpr int kFinalSweeps = 200;
+// Seeds grown together (grow together): once grown, the zone is judged
+// every kJudgeIters steps, the most overlapped seed given up while an
+// overlap exceeds kNearlyJammed rmin.
+constexpr int kJudgeIters = 1000;
 
 // FIRE (Bitzek et al. 2006; harmonic overlap energy, unit stiffness and
 // mass): time step (start, largest, growth kFireGrow after kFireDelay

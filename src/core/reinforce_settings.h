@@ -27,6 +27,9 @@ struct Settings {
   // The width of the zone regrown around a target the relocation left
   // without a place (reinforce_regrowth.h); 0: none, such a target is deleted.
   double regrow = 0;
+  // The regrowth's seeds grown one by one (false, `grow each`) or all of a
+  // block's together (`grow together`).
+  bool grow_together = false;
 };
 
 }    // namespace reinforce

@@ -5,11 +5,12 @@
 #   quality.sh CASE NP LMP CHECK_SCENE SCENE_QUALITY SCENES [--] [scene_quality args]
 # SCENES/CASE/{before.data,ref.data,boundary} must exist (make_scenes.sh).
 # QUALITY_LMP_VARS="-var method delete -var cut 0.0125": more lmp arguments
-# (in.quality lists them). QUALITY_REMOVED_MAX=X: the removed ratio must be
-# at most X. A scene without ref.data is measured without a reference.
-# The scene's md5 (ids, types, positions, radii as written) is printed and,
-# with the fix's defaults (no QUALITY_LMP_VARS), written to
-# SCENES/CASE/after_npNP.md5 before the assertions: same_scene.sh --runs
+# (in.quality lists them). QUALITY_FIX="grow together" with QUALITY_TAG=together:
+# fix keywords after the defaults, the tag naming the run. QUALITY_REMOVED_MAX=X:
+# the removed ratio must be at most X. A scene without ref.data is measured
+# without a reference. The scene's md5 (ids, types, positions, radii as
+# written) is printed and, without QUALITY_LMP_VARS, written to
+# SCENES/CASE/after_npNP[_TAG].md5 before the assertions: same_scene.sh --runs
 # compares those of the process counts instead of running the fix again.
 set -euo pipefail
 case=$1 np=$2 lmp=$3 check=$4 quality=$5 scenes=$6
@@ -17,6 +18,9 @@ shift 6
 [ "${1:-}" = "--" ] && shift
 # shellcheck disable=SC2206    # words of a list of arguments
 vars=(${QUALITY_LMP_VARS:-})
+[ -n "${QUALITY_FIX:-}" ] && vars+=(-var extra "$QUALITY_FIX")
+tag=${QUALITY_TAG:+_$QUALITY_TAG}
+[ -n "${QUALITY_FIX:-}" ] && [ -z "$tag" ] && { echo "FAIL: QUALITY_FIX needs QUALITY_TAG"; exit 1; }
 here=$(cd "$(dirname "$0")" && pwd)
 dir=$scenes/$case
 [ -f "$dir/before.data" ] || { echo "FAIL: no scene in $dir (make_scenes.sh)"; exit 1; }
@@ -24,7 +28,7 @@ reference=()
 [ -f "$dir/ref.data" ] && reference=(--reference "$dir/ref.data")
 read -r bx by bz < "$dir/boundary"
 md5_out=""
-[ -n "${QUALITY_LMP_VARS:-}" ] || md5_out=$dir/after_np$np.md5
+[ -n "${QUALITY_LMP_VARS:-}" ] || md5_out=$dir/after_np$np$tag.md5
 [ -z "$md5_out" ] || rm -f "$md5_out"    # none left from an earlier run
 . "$(dirname "${BASH_SOURCE[0]}")/../scripts/test_env.sh" "quality_${case}"
 launch=(mpirun -np "$np")
@@ -35,7 +39,7 @@ start=$(date +%s.%N)
   || { echo "FAIL: $lmp exited non-zero"; tail -5 "$work/log"; exit 1; }
 end=$(date +%s.%N)
 read -r _ targets relocated deleted kept < <(grep '^TOTALS ' "$work/log" | tail -1)
-echo "$case np=$np: targets $targets relocated $relocated deleted $deleted kept $kept ($(awk -v a="$start" -v b="$end" 'BEGIN {printf "%.2f", b - a}') s with start-up)"
+echo "$case${QUALITY_FIX:+ ($QUALITY_FIX)} np=$np: targets $targets relocated $relocated deleted $deleted kept $kept ($(awk -v a="$start" -v b="$end" 'BEGIN {printf "%.2f", b - a}') s with start-up)"
 grep '^fix reinforce/invert:' "$work/log" | tail -1 || true
 "$check" --before "$work/before.dump" --after "$work/after.dump" --deleted "$deleted" \
   | grep -v '^INFO' || { echo "FAIL: check_scene (above)"; exit 1; }

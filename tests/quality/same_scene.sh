@@ -6,16 +6,18 @@
 #   same_scene.sh CASE --runs SCENES NP...   compares the scenes the
 #       quality tests (quality.sh CASE NP, the same defaults) wrote, from
 #       their SCENES/CASE/after_npNP.md5, without running the fix again
+#       (QUALITY_TAG=T: after_npNP_T.md5, the runs tagged T)
 set -euo pipefail
 case=$1 lmp=$2 scenes=$3
 shift 3
 if [ "$lmp" = --runs ]; then
   first=""
   for np in "$@"; do
-    f=$scenes/$case/after_np$np.md5
-    [ -s "$f" ] || { echo "FAIL: no scene of quality_${case}_np$np ($f): did that test run?"; exit 1; }
+    tag=${QUALITY_TAG:+_$QUALITY_TAG}
+    f=$scenes/$case/after_np$np$tag.md5
+    [ -s "$f" ] || { echo "FAIL: no scene of quality_${case}${tag}_np$np ($f): did that test run?"; exit 1; }
     sum=$(cat "$f")
-    echo "$case np=$np: scene $sum (quality_${case}_np$np)"
+    echo "$case np=$np: scene $sum (quality_${case}${tag}_np$np)"
     [ -z "$first" ] && first=$sum
     [ "$sum" = "$first" ] || { echo "FAIL: the scene at $np processes differs from the one at $1"; exit 1; }
   done
