@@ -125,9 +125,10 @@ private:
     for (const Contact &c : contacts_[i]) {
       const Body &o = bodies_[static_cast<std::size_t>(c.j)];
       if (!o.present) continue;
-      // |rel + t d| = R: the first root, for a pair that closes in.
+      // |rel + t d| = R (contact, less what the pair overlapped at the
+      // start): the first root, for a pair that closes in.
       const Vec3 rel = b.x - o.x;
-      const double R = b.R + o.R;
+      const double R = b.R + o.R - c.allowed;
       if (R - norm(rel) > kClear * std::min(b.R, o.R)) return 0;
       const double half_b = dot(rel, d);
       if (!(half_b < 0)) continue;
@@ -438,15 +439,6 @@ private:
     }
   }
 
-  // What the pair may overlap: its overlap at the start while neither has
-  // moved, else nothing.
-  static double allowed(const Body &b, const Body &o, const Contact &c)
-  {
-    const bool unmoved = b.x.x == b.x0.x && b.x.y == b.x0.y && b.x.z == b.x0.z && o.x.x == o.x0.x &&
-                         o.x.y == o.x0.y && o.x.z == o.x0.z;
-    return unmoved ? c.allowed : 0;
-  }
-
   // One Gauss-Seidel sweep over the active spheres: each, by id, moves out
   // of its overlaps (its share of each against an active sphere, by
   // mobility; all of it against any other), by tol of the smaller radius
@@ -467,7 +459,7 @@ private:
         if (!o.present) continue;
         const double rj = radius(o);
         const double dist = norm(b.x - o.x);
-        const double excess = ri + rj - dist - allowed(b, o, c);
+        const double excess = ri + rj - dist - c.allowed;
         if (!(excess > 0)) continue;
         const double small = std::min(ri, rj);
         worst = std::max(worst, excess / small);
@@ -493,7 +485,7 @@ private:
       const Body &o = bodies_[static_cast<std::size_t>(c.j)];
       if (!o.present) continue;
       const double small = std::min(b.R, o.R);
-      const double excess = (b.R + o.R - norm(b.x - o.x) - allowed(b, o, c)) / small;
+      const double excess = (b.R + o.R - norm(b.x - o.x) - c.allowed) / small;
       if (excess > kClear) sum += excess;
     }
     return sum;
@@ -531,13 +523,14 @@ private:
         stats.max_move = std::max(stats.max_move, norm(dx) / settings_.rmin);
         out.push_back({b.id, RecordKind::Pushed, dx, 0});
       }
-      // At their own radii, against everything present.
+      // At their own radii, against everything present, beyond what each
+      // pair overlapped at the start.
       double largest = 0;
       bool exact = true;
       for (const Contact &c : contacts_[i]) {
         const Body &o = bodies_[static_cast<std::size_t>(c.j)];
         if (!o.present) continue;
-        const double overlap = b.R + o.R - norm(b.x - o.x);
+        const double overlap = b.R + o.R - norm(b.x - o.x) - c.allowed;
         largest = std::max(largest, overlap / settings_.rmin);
         exact = exact && !(overlap > kRegrowthExact * std::min(b.R, o.R));
       }

@@ -31,8 +31,10 @@ struct Body {
 
 struct Contact {
   int j = 0;
-  // The pair's overlap at the start (non-seed pairs): left as it was
-  // while neither moves (the packing's own overlaps are not the fix's).
+  // The pair's overlap at the start (pairs of matrix spheres): the most it
+  // may overlap as they move. The packing's own overlaps (a packing settled
+  // by DEM has one at every contact) are not the fix's: none gets worse,
+  // and the spheres that have them can still move.
   double allowed = 0;
 };
 

@@ -41,11 +41,11 @@ double SoftRelaxation::forces(std::vector<Vec3> &f) const
     const Body &b = bodies_[i];
     const double ri = radius(b);
     Vec3 F;
-    for (int j : near_[i]) {
-      const Body &o = bodies_[static_cast<std::size_t>(j)];
+    for (const Contact &c : near_[i]) {
+      const Body &o = bodies_[static_cast<std::size_t>(c.j)];
       if (!o.present) continue;
       const double rj = radius(o);
-      const double sum = ri + rj;
+      const double sum = ri + rj - c.allowed;    // contact, less the pair's own overlap
       const double d2 = norm2(b.x - o.x);
       if (d2 >= sum * sum) continue;
       const double dist = std::sqrt(d2);
@@ -72,7 +72,7 @@ void SoftRelaxation::build_near()
     const Body &b = bodies_[i];
     for (const Contact &c : contacts_[i]) {
       const Body &o = bodies_[static_cast<std::size_t>(c.j)];
-      if (o.present && norm(b.x - o.x) < b.R + o.R + skin_) near_[i].push_back(c.j);
+      if (o.present && norm(b.x - o.x) < b.R + o.R + skin_) near_[i].push_back(c);
     }
     built_[i] = b.x;
   }

@@ -37,9 +37,9 @@ private:
   const Domain &domain_;
   double tol_;
   double pull_ = 0;
-  double skin_ = 0;                       // of the neighbour lists
-  std::vector<std::vector<int>> near_;    // an active sphere's neighbours
-  std::vector<Vec3> built_;               // where it was when they were found
+  double skin_ = 0;                           // of the neighbour lists
+  std::vector<std::vector<Contact>> near_;    // an active sphere's neighbours
+  std::vector<Vec3> built_;                   // where it was when they were found
 
   void size_lists();
   double forces(std::vector<Vec3> &f) const;
