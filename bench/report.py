@@ -148,7 +148,9 @@ md.append(
     "the seed paper's mode: every target takes the radius of the void it fits. **choose first** and "
     "**tries 15** (the paper-era budget) change one keyword of the defaults each. **push rmax** = the "
     "defaults with `push rmax`: neighbours may be pushed up to rmax to make room for a target at its own "
-    "radius. **delete_atoms overlap** with cutoff r_bar + rmax removes every target and spheres "
+    "radius. **grow each** = the defaults with `grow each`: the regrowth (where no void holds a target) "
+    "grows a block's targets one by one in a zone of 3 rmax, where the defaults (`grow together`) grow them "
+    "all at once in a zone of 5 rmax. **delete_atoms overlap** with cutoff r_bar + rmax removes every target and spheres "
     "that do not overlap; with r_bar + rmin it misses overlapping ones. **relax** = dynamic relaxation "
     "(frictionless Hertz, bars frozen, viscous damping).\n")
 md.append(
@@ -421,7 +423,7 @@ if profiles:
 
     md.append("Matrix solid fraction (± its standard error) against distance from the nearest rebar surface, "
               "in bins of rmin, out to 6 rmax, for each scene: the fix's defaults, the seed paper's `size fit`, "
-              "`regrow yes`, `delete_atoms overlap` with cutoff r_bar + rmax, and the packing grown around "
+              "`grow each` (the regrowth's seeds one by one), `delete_atoms overlap` with cutoff r_bar + rmax, and the packing grown around "
               "the bars where this run has one (`scene_quality`; the same rows as the tables above). A "
               "packing grown around the bars has a dense first layer against them; a hollow there is the "
               "room the targets took with them.\n")

@@ -17,8 +17,8 @@
 #   fix       reinforce/invert: defaults (size keep, choose closest, tries
 #             1000, no pushing), size fit (the seed paper's mode), choose
 #             first, tries 15 (paper-era budget), push rmax (size keep with
-#             pushing), regrow yes (the regrowth where no void holds a
-#             target); time = the fix's own f_ID[9]
+#             pushing), grow each (the regrowth's seeds one by one, in a
+#             zone of 3 rmax); time = the fix's own f_ID[9]
 #   delete    delete_atoms overlap with cutoff r_bar + rmax (removes every
 #             target and more) and r_bar + rmin (misses some); time = wall
 #             clock around the command (shell date in the input)
@@ -161,7 +161,7 @@ run_delete() {
 declare -A refs_of=() lammps_refs_of=()
 # The methods whose profiles (solid fraction against distance from the bars)
 # go to profile.tsv, for the report's plots.
-profiled="|fix defaults|fix size fit (seed paper)|fix regrow yes|delete_atoms overlap|"
+profiled="|fix defaults|fix size fit (seed paper)|fix grow each|delete_atoms overlap|"
 quality_value() {    # quality_value LINE KEY: a value from a QUALITY line
   tr ' ' '\n' <<<"$1" | awk -F= -v k="$2" '$1 == k {print $2}'
 }
@@ -304,8 +304,8 @@ bench_scene() {
     run_fix "$name" "$data" "fix push rmax" 1000 1 "$rep" -var opts "push $rmax"
     [ "$rep" = 1 ] && quality_of "$name" "$data" "fix push rmax" 1000 "$rmin" "$rmax"
     rm -f "$last_run/after.dump"
-    run_fix "$name" "$data" "fix regrow yes" 1000 1 "$rep" -var opts "regrow yes"
-    [ "$rep" = 1 ] && quality_of "$name" "$data" "fix regrow yes" 1000 "$rmin" "$rmax"
+    run_fix "$name" "$data" "fix grow each" 1000 1 "$rep" -var opts "grow each"
+    [ "$rep" = 1 ] && quality_of "$name" "$data" "fix grow each" 1000 "$rmin" "$rmax"
     rm -f "$last_run/after.dump"
     for cut in "$(awk -v a="$rbar" -v b="$rmax" 'BEGIN {print a + b}')" \
                "$(awk -v a="$rbar" -v b="$rmin" 'BEGIN {print a + b}')"; do
@@ -431,6 +431,8 @@ liggghts_part() {
     [ "$quick" = 1 ] && return 0
     run_liggghts "$size_fit" "$rep" "size fit"
     [ "$rep" = 1 ] && quality_of liggghts - "$size_fit" 1000 0.003 0.005 "$last_run/liggghts_bench.data"
+    run_liggghts "fix grow each" "$rep" "grow each"
+    [ "$rep" = 1 ] && quality_of liggghts - "fix grow each" 1000 0.003 0.005 "$last_run/liggghts_bench.data"
   done
   return 0
 }

@@ -249,13 +249,13 @@ TEST(FixOptions, WallsErrorsNameTheProblem)
             I + "walls must be 'check' or 'ignore', got 'maybe'");
 }
 
-// regrow: on by default with size keep (3 matrix radii), not with size fit
+// regrow: on by default with size keep (5 matrix radii), not with size fit
 // or unplaced keep unless asked (an error with unplaced keep); yes gives
 // the same, a length sets the zone's width (capped by the box); no turns
 // it off.
 TEST(FixOptions, RegrowWidthOrNo)
 {
-  EXPECT_DOUBLE_EQ(make_settings(parse_fix_arguments({"0", "bars"}), 0.1, 0.3, 100).regrow, 0.9);
+  EXPECT_DOUBLE_EQ(make_settings(parse_fix_arguments({"0", "bars"}), 0.1, 0.3, 100).regrow, 1.5);
   EXPECT_EQ(
       make_settings(parse_fix_arguments({"0", "bars", "unplaced", "keep"}), 0.1, 0.3, 100).regrow,
       0);
@@ -265,7 +265,7 @@ TEST(FixOptions, RegrowWidthOrNo)
             0);    // the seed paper's mode, unless asked
   EXPECT_DOUBLE_EQ(
       make_settings(parse_fix_arguments({"0", "bars", "regrow", "yes"}), 0.1, 0.3, 100).regrow,
-      0.9);
+      1.5);
   EXPECT_EQ(
       make_settings(parse_fix_arguments({"0", "bars", "regrow", "0.5"}), 0.1, 0.3, 100).regrow,
       0.5);
@@ -295,21 +295,22 @@ TEST(FixOptions, RegrowWidthOrNo)
   EXPECT_NO_THROW(parse_fix_arguments({"0", "bars", "regrow", "no", "unplaced", "keep"}));
 }
 
-// grow: the regrowth's seeds one by one (each, the default) or together,
-// whose zone is then 5 matrix radii wide unless regrow gives a width; an
+// grow: the regrowth's seeds together (the default, in a zone 5 matrix
+// radii wide unless regrow gives a width) or one by one (3 radii); an
 // error where there is no regrowth.
 TEST(FixOptions, GrowEachOrTogether)
 {
-  const Settings each = make_settings(parse_fix_arguments({"0", "bars"}), 0.1, 0.3, 100);
-  EXPECT_FALSE(each.grow_together);
-  const Settings named =
-      make_settings(parse_fix_arguments({"0", "bars", "grow", "each"}), 0.1, 0.3, 100);
-  EXPECT_FALSE(named.grow_together);
-  EXPECT_DOUBLE_EQ(named.regrow, 0.9);
-  const Settings together =
-      make_settings(parse_fix_arguments({"0", "bars", "grow", "together"}), 0.1, 0.3, 100);
+  const Settings together = make_settings(parse_fix_arguments({"0", "bars"}), 0.1, 0.3, 100);
   EXPECT_TRUE(together.grow_together);
   EXPECT_DOUBLE_EQ(together.regrow, 1.5);
+  const Settings named =
+      make_settings(parse_fix_arguments({"0", "bars", "grow", "together"}), 0.1, 0.3, 100);
+  EXPECT_TRUE(named.grow_together);
+  EXPECT_DOUBLE_EQ(named.regrow, 1.5);
+  const Settings each =
+      make_settings(parse_fix_arguments({"0", "bars", "grow", "each"}), 0.1, 0.3, 100);
+  EXPECT_FALSE(each.grow_together);
+  EXPECT_DOUBLE_EQ(each.regrow, 0.9);
   EXPECT_EQ(make_settings(parse_fix_arguments({"0", "bars", "grow", "together", "regrow", "0.5"}),
                           0.1, 0.3, 100)
                 .regrow,

@@ -209,12 +209,11 @@ Settings make_settings(const FixOptions &o, double matrix_rmin, double matrix_rm
   s.displaced = o.keep_unplaced ? 2 : (o.displaced_set ? o.displaced : 2);
   // The regrowth: by default with size keep (the seed paper's size fit
   // stays as it was unless asked), never with unplaced keep (which leaves
-  // such targets where they are); its zone reaches 3 radii, the second
-  // shell of neighbours of a seed (docs/design.md, "Regrowth").
+  // such targets where they are); its zone reaches 5 radii, where the
+  // seeds grown together find the room they need, 3 (the second shell of
+  // neighbours of a seed) one by one (docs/design.md, "Regrowth").
   const bool regrow =
       !o.regrow_off && !o.keep_unplaced && (o.regrow_set || o.size == SizeMode::Keep);
-  // Grown together, the seeds need room from a wider zone: measured on the
-  // quality scenes, 5 radii put back the most (docs/design.md, "Regrowth").
   const double width = (o.grow_together ? 5 : 3) * matrix_rmax;
   s.regrow = regrow ? std::min(o.regrow > 0 ? o.regrow : width, bound) : 0;
   s.grow_together = o.grow_together;

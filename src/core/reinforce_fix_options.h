@@ -41,16 +41,16 @@ struct FixOptions {
   // cannot describe does not stop the run (the user takes the risk).
   bool walls_ignore = false;
   // regrow yes (the default with size keep, not with unplaced keep) or W:
-  // on, W the zone's width (else 3 * the matrix's largest radius); set
+  // on, W the zone's width (else 5 * the matrix's largest radius); set
   // explicitly, an error with unplaced keep. regrow no: off.
   bool regrow_set = false;
   bool regrow_off = false;
   double regrow = 0;
-  // grow each (the default) or together: the regrowth's seeds one by one,
-  // or a block's all at once (its default width then 5 * the matrix's
-  // largest radius).
+  // grow together (the default) or each: a block's seeds all at once, or
+  // one by one (its default width then 3 * the matrix's largest radius,
+  // else 5).
   bool grow_set = false;
-  bool grow_together = false;
+  bool grow_together = true;
 };
 
 // Smallest accepted `tol`: below it the rounding of coordinates (and of the

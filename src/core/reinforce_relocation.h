@@ -38,7 +38,7 @@ struct Stats {
   double max_push = 0;            // largest displacement of a pushed sphere in one call, / rmin
   std::int64_t sweeps = 0;        // rearrangement sweeps
   std::int64_t isolated = 0;      // unplaced with fewer than four spheres within `search`
-  std::int64_t shrunk = 0;            // relocated with a radius below its own
+  std::int64_t shrunk = 0;        // relocated with a radius below its own
 };
 
 // What became of one target.

@@ -27,9 +27,9 @@ struct Settings {
   // The width of the zone regrown around a target the relocation left
   // without a place (reinforce_regrowth.h); 0: none, such a target is deleted.
   double regrow = 0;
-  // The regrowth's seeds grown one by one (false, `grow each`) or all of a
-  // block's together (`grow together`).
-  bool grow_together = false;
+  // The regrowth's seeds: all of a block's grown together (`grow
+  // together`, the default), or one by one (`grow each`).
+  bool grow_together = true;
 };
 
 }    // namespace reinforce
