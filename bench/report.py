@@ -675,3 +675,116 @@ if ok_b:
 md.append("\nThe stiff follow-on comparison (a stiff Hertz run after each method) is a separate script and "
           "page: `bash bench/stiff.sh`, [stiff.md](stiff.md).")
 open(os.path.join(docs, "benchmarks.md"), "w").write("\n".join(md) + "\n")
+
+
+# --- the README's figures -------------------------------------------------------
+# README.md's "What it gives" holds, between two marks, sentences filled from
+# this run (report.py OUT DOCS README): the figures a reader sees first are
+# the ones this page has.
+README_BEGIN = "<!-- written by bench/report.py from the benchmark run (bench/run.sh): do not edit -->"
+README_END = "<!-- end of what bench/report.py writes -->"
+
+
+def span(values, spec):
+    values = [v for v in values if v is not None]
+    if not values:
+        return None
+    lo, hi = min(values), max(values)
+    return format(lo, spec) if format(lo, spec) == format(hi, spec) else f"{format(lo, spec)} to {format(hi, spec)}"
+
+
+def quality_of_run(scene, method, param=None):
+    return next((q for q in quality if q["scene"] == scene and q["method"] == method
+                 and (param is None or q["param"] == param)), None)
+
+
+def readme_bullets():
+    out = []
+    beams = [s for s in summary if s[0].startswith("beam")]
+    g64 = group("beam064", "1")
+    fix64 = find(g64, "fix defaults")
+    if fix64:
+        out.append(
+            f"* The paper's beam at solid fraction 0.64: {fix64['targets']:.0f} targets, {fix64['relocated']:.0f} "
+            f"relocated, {fix64['deleted']:.0f} deleted (the paper's worst case deleted 20%). The largest "
+            f"residual overlap is {fix64['overlap']:.1e} rmin, and the fix takes {fix64['op_seconds']:.3f} s "
+            "(one process).")
+    if beams:
+        ratio = span([f["op_seconds"] / b["op_seconds"] for _, f, _, _, b, _ in beams], ".1f")
+        fit_ratio = span([fi["op_seconds"] / b["op_seconds"] for _, _, fi, _, b, _ in beams if fi], ".1f")
+        text = (f"* Against `delete_atoms overlap` on the same beams (one process, "
+                f"[docs/benchmarks.md](docs/benchmarks.md)): the defaults take {ratio} times its time (the seed "
+                f"paper's `size fit` {fit_ratio}) and delete {span([f['deleted'] for _, f, _, _, _, _ in beams], '.0f')} "
+                f"spheres where it deletes {span([b['deleted'] for _, _, _, _, b, _ in beams], ',.0f')}.")
+        shells = [num(q["shell_ratio"]) for s, *_ in beams for q in [quality_of_run(s, "fix defaults")] if q]
+        dels = [num(q["shell_ratio"]) for s, _, _, _, b, _ in beams
+                for q in [quality_of_run(s, "delete_atoms overlap", b["param"])] if q]
+        q60, f60 = quality_of_run("beam060", "fix defaults"), quality_of_run("beam060", SIZE_FIT)
+        lmp60 = next((r for r in grown if r["scene"] == "beam060" and r["kind"] == "lammps"), None)
+        around60 = next((r for r in grown if r["scene"] == "beam060" and r["kind"] == "around"), None)
+        if shells:
+            text += (f" The matrix within 2 rmax of the bars keeps {span(shells, '.2f')} of its bulk solid fraction"
+                     + (f" ({num(q60['shell_ratio']):.3f} at 0.60" if q60 else "")
+                     + (f", where the same law grown around the bars by LAMMPS has {num(lmp60['shell_ratio']):.3f}"
+                        if q60 and lmp60 else "")
+                     + (f" and `size fit` {num(f60['shell_ratio']):.3f}" if q60 and f60 else "")
+                     + (")" if q60 else "")
+                     + (f", against {span(dels, '.2f')} after `delete_atoms`" if dels else "") + ".")
+        fix60 = find(group("beam060", "1"), "fix defaults")
+        if fix60 and (lmp60 or around60):
+            parts = []
+            if lmp60:
+                parts.append(f"{float(lmp60['wall_seconds']) / fix60['op_seconds']:,.0f} times as long (LAMMPS, "
+                             "the beam's own law)")
+            if around60:
+                parts.append(f"{float(around60['wall_seconds']) / fix60['op_seconds']:,.0f} times (this project's "
+                             "fast grower)")
+            text += " Growing that packing around the bars takes " + " or ".join(parts) + "."
+        relaxed = [(f, r) for _, f, _, _, _, r in beams if r]
+        if relaxed:
+            text += (f" Against dynamic relaxation ({relaxed[0][1]['param']}): "
+                     f"{span([100 * f['op_seconds'] / r['op_seconds'] for f, r in relaxed], '.1f')}% of its run time, "
+                     f"and {span([f['overlap'] for f, _ in relaxed], '.0e')} overlap where it stops at "
+                     f"{span([r['overlap'] for _, r in relaxed], '.0e')}.")
+        out.append(text)
+    gn = group("narrow", "1")
+    fn, en = find(gn, "fix defaults"), find(gn, "fix grow each")
+    qn, qe = quality_of_run("narrow", "fix defaults"), quality_of_run("narrow", "fix grow each")
+    if fn:
+        text = (f"* Where the matrix radii are close (4 to 5 mm, the narrow scene), most targets find no void: "
+                f"the regrowth makes room, and the defaults delete {fn['deleted']:.0f} of {fn['targets']:.0f} "
+                f"targets in {fn['op_seconds']:.1f} s")
+        if qn and num(qn["shell_vs_reference"]) is not None:
+            text += (f"; the layer against the bars is {num(qn['shell_vs_reference']):+.3f} of shell ratio from "
+                     "a packing grown around them")
+        if en:
+            text += (f" (`grow each`, the targets regrown one by one: {en['deleted']:.0f} deleted in "
+                     f"{en['op_seconds']:.1f} s"
+                     + (f", {num(qe['shell_vs_reference']):+.3f}" if qe and num(qe["shell_vs_reference"]) is not None
+                        else "") + ")")
+        out.append(text + ".")
+    gl = group("liggghts", "1")
+    fl = find(gl, "fix defaults")
+    if fl:
+        out.append(f"* The LIGGGHTS example (a packing settled under gravity, two bars): {fl['targets']:.0f} "
+                   f"targets, {fl['deleted']:.0f} deleted, {fl['op_seconds']:.1f} s.")
+    s1 = find(group("speedup_slab", "1"), "fix defaults") or find(group("slab", "1"), "fix defaults")
+    s2 = find(group("speedup_slab", "2"), "fix defaults")
+    if s1:
+        atoms = next(r["atoms"] for r in rows if r["scene"] in ("speedup_slab", "slab"))
+        out.append(f"* A slab of {int(atoms):,} spheres with a mesh of bars: {s1['targets']:,.0f} targets, "
+                   f"{s1['deleted']:.0f} deleted, {s1['op_seconds']:.1f} s on one process"
+                   + (f" and {s2['op_seconds']:.1f} s on two" if s2 else "") + " (the paper's slab took 12 hours).")
+    return out
+
+
+if len(sys.argv) > 3:
+    readme = sys.argv[3]
+    text = open(readme).read()
+    if README_BEGIN not in text or README_END not in text:
+        sys.exit(f"report.py: {readme} lacks the marks of the part it writes")
+    head, rest = text.split(README_BEGIN, 1)
+    tail = rest.split(README_END, 1)[1]
+    body = "\n".join(readme_bullets())
+    open(readme, "w").write(f"{head}{README_BEGIN}\n{body}\n{README_END}{tail}")
+    print(f"wrote the figures of {readme}")

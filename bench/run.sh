@@ -413,7 +413,14 @@ series_rbar() {
 finish() {
   meta "load_end" "$(cut -d' ' -f1-3 /proc/loadavg)"
   meta "minutes" "$(awk -v s="$(( $(date +%s) - start_s ))" 'BEGIN {printf "%.1f", s / 60}')"
-  /usr/bin/python3 "$top/bench/report.py" "$out" "$docs"
+  # README.md's figures from the same run: the repository's own when the
+  # page goes to docs/, else a copy beside the page (a trial or --quick run).
+  readme=$top/README.md
+  if [ "$quick" = 1 ] || [ -n "${REINFORCE_BENCH_DOCS:-}" ]; then
+    readme=$docs/README.md
+    cp "$top/README.md" "$readme"
+  fi
+  /usr/bin/python3 "$top/bench/report.py" "$out" "$docs" "$readme"
   echo "wrote $docs/benchmarks.md"
 }
 
@@ -483,6 +490,9 @@ if [ "$quick" = 1 ]; then
     grep -q "^## Against a packing grown around the bars" "$docs/benchmarks.md" &&
     grep -q "^## Profiles" "$docs/benchmarks.md" ||
     { echo "bench --quick: report section missing"; exit 1; }
+  sed -n '/written by bench\/report.py/,/end of what bench\/report.py writes/p' "$docs/README.md" |
+    grep -q "^\* Where the matrix radii are close" ||
+    { echo "bench --quick: README.md's figures not written"; exit 1; }
   for sc in small narrow; do
     grep -q '<polyline points="[0-9]' "$docs/img/profile_$sc.svg" ||
       { echo "bench --quick: no profile plot of $sc"; exit 1; }
