@@ -1,5 +1,6 @@
 #include "reinforce_regrowth.h"
 
+#include "reinforce_cell_grid.h"
 #include "reinforce_regrowth_zone.h"
 #include "reinforce_soft_relaxation.h"
 
@@ -75,9 +76,18 @@ private:
       const Body &o = bodies_[static_cast<std::size_t>(c.j)];
       if (o.present && norm(o.x - seed.x0) < seed.cap + seed.R + o.R) near.push_back({o.x, o.R});
     }
+    // Each point reads one cell, which lists every sphere it can touch.
+    double largest = 0;
+    for (const auto &o : near) largest = std::max(largest, o.second);
+    CellGrid grid(seed.R + largest);
+    for (std::size_t k = 0; k < near.size(); ++k)
+      grid.insert_around(near[k].first, static_cast<int>(k));
     const auto overlap_at = [&](Vec3 p) {
       double deepest = 0;
-      for (const auto &o : near) deepest = std::max(deepest, seed.R + o.second - norm(p - o.first));
+      grid.for_each_in_cell(p, [&](int k) {
+        const auto &o = near[static_cast<std::size_t>(k)];
+        deepest = std::max(deepest, seed.R + o.second - norm(p - o.first));
+      });
       return deepest / seed.R;
     };
     std::vector<std::pair<double, Vec3>> scored;
