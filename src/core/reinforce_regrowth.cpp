@@ -30,12 +30,13 @@ public:
   // the room the targets left is spread in caps against the bars, too
   // small for a sphere each; settling (hard spheres), then compaction
   // (soft spheres pulled towards the bars, relaxed) gather it away from
-  // the bars and make the layer against them dense. Then the seeds one by
-  // one, by id: each grows from the least overlapped places near where it
-  // was while the whole zone relaxes (FIRE); one that cannot fit leaves
-  // the zone as it found it and is deleted. No matrix sphere is deleted,
-  // and a seed placed stays a movable sphere of the zone for the seeds
-  // after it.
+  // the bars and make the layer against them dense. Then the seeds: all
+  // together (grow_together), those the zone cannot hold given up; or one
+  // by one, by id (grow_seed), each from the least overlapped places near
+  // where it was while the whole zone relaxes (FIRE), one that cannot fit
+  // leaving the zone as it found it, deleted. Shrunk seeds always go one by
+  // one. No matrix sphere is deleted, and a seed placed stays a movable
+  // sphere of the zone for the seeds after it.
   std::vector<RoundRecord> run(RegrowthStats &stats)
   {
     delete_displaced(stats);

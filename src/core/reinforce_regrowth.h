@@ -3,9 +3,11 @@
 // block left without a place (the seeds) are taken out; the zone's matrix
 // (within `width` of them) settles onto the bars as hard spheres, then is
 // compacted against them as soft spheres; then each seed, by id, goes back
-// at its own radius where it fits alone, or grows there while the zone
-// relaxes. A seed that cannot fit is deleted and the zone left as it was;
-// the bars and everything beyond the zone are frozen, sizes never change.
+// at its own radius where it fits alone; the others grow together while
+// the zone relaxes, those it cannot hold given up (deleted), or (grow
+// each) one by one, a seed that cannot fit deleted and the zone left as it
+// was. The bars and everything beyond the zone are frozen, sizes never
+// change, and no pair overlaps more than it did at the start.
 // A target the relocation placed shrunk across thin bars is a seed too:
 // its shrunk sphere gives way while it tries its own radius, and stays
 // where that fails.
