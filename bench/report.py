@@ -105,7 +105,7 @@ if loads:
     md.append("Load average (1, 5, 15 minutes) at the start of each part of the run: " +
               "; ".join(f"{k} {v}" for k, v in loads) +
               ". A load above the core count means other jobs shared the machine and inflated the times.\n")
-all_parts = ["reference", "compare", "narrow", "liggghts", "speedup", "gap", "rbar", "relax", "slab", "scaling"]
+all_parts = ["reference", "compare", "narrow", "more", "liggghts", "speedup", "gap", "rbar", "relax", "slab", "scaling"]
 not_run = [p for p in all_parts if p in skipped]
 if quick:
     md.append("This is the `--quick` run: one small scene, a small narrow-size scene with its reference and one "
