@@ -34,9 +34,10 @@ public:
   // together (grow_together), those the zone cannot hold given up; or one
   // by one, by id (grow_seed), each from the least overlapped places near
   // where it was while the whole zone relaxes (FIRE), one that cannot fit
-  // leaving the zone as it found it, deleted. Shrunk seeds always go one by
-  // one. No matrix sphere is deleted, and a seed placed stays a movable
-  // sphere of the zone for the seeds after it.
+  // leaving the zone as it found it, deleted. A shrunk seed's shrunk
+  // sphere stays where the seed is not put back. No matrix sphere is
+  // deleted, and a seed placed stays a movable sphere of the zone for the
+  // seeds after it.
   std::vector<RoundRecord> run(RegrowthStats &stats)
   {
     delete_displaced(stats);
@@ -230,41 +231,54 @@ private:
     seed.placed = clear;
   }
 
-  // The seeds of `waiting` (not shrunk ones) all at once: each, by id, goes
-  // back where it fits alone; the rest start at their least overlapped
-  // place, at kStartScale of their radius, and grow together while the
-  // whole zone relaxes. Whenever the zone jams (an overlap above kAbort after
-  // a growth step, above kNearlyJammed after kJudgeIters steps once grown),
-  // the seed that overlaps most is given up; then the zone relaxes to
-  // kClear, giving up one more seed at each try that does not end clear.
-  // Returns the shrunk seeds, left for grow_seed.
+  // The seeds of `waiting` all at once: each, by id, goes back where it
+  // fits alone; the rest start at their least overlapped place, at
+  // kStartScale of their radius, and grow together while the whole zone
+  // relaxes. Whenever the zone jams (an overlap above kAbort after a growth
+  // step, above kNearlyJammed after kJudgeIters steps once grown), the seed
+  // that overlaps most is given up; then the zone relaxes to kClear, giving
+  // up one more seed at each try that does not end clear. A shrunk seed's
+  // shrunk sphere gives way while it tries, and comes back where the seed
+  // is given up (or where it was, when the zone does not end clear).
+  // Returns the shrunk seeds not put back, left for grow_seed: measured,
+  // their own tries after the zone's put back a third more of them.
   std::vector<std::size_t> grow_together(const std::vector<std::size_t> &waiting,
                                          RegrowthStats &stats)
   {
-    std::vector<std::size_t> growing, shrunk;
+    std::vector<std::size_t> growing;
     std::vector<Vec3> first;
     for (std::size_t i : waiting) {
       Body &seed = bodies_[i];
-      if (seed.twin >= 0) {
-        shrunk.push_back(i);
-        continue;
-      }
+      const int twin = seed.twin;
+      // A shrunk sphere that may not move (beyond the zone, an image) stays.
+      if (twin >= 0 && !bodies_[static_cast<std::size_t>(twin)].movable) continue;
+      show_twin(seed, false);
       seed.present = true;
       const std::vector<Vec3> places = starts(i);
       for (std::size_t k = 0; k < places.size() && !seed.placed; ++k)
         seed.placed = fits_alone(i, places[k], stats);
       seed.present = seed.placed;
-      if (seed.placed || places.empty()) {
-        if (!seed.placed) seed.x = seed.x0;
-        continue;
-      }
+      if (seed.placed) continue;
       seed.x = seed.x0;
+      show_twin(seed, true);    // holds its place until the growth
+      if (places.empty()) continue;
       growing.push_back(i);
       first.push_back(places.front());
     }
-    if (growing.empty()) return shrunk;
+    if (!growing.empty()) grow_all(growing, first, stats);
+    std::vector<std::size_t> shrunk;
+    for (std::size_t i : waiting)
+      if (bodies_[i].twin >= 0 && !bodies_[i].placed) shrunk.push_back(i);
+    return shrunk;
+  }
+
+  // The seeds `growing` grown together from `first` (grow_together).
+  void grow_all(std::vector<std::size_t> growing, const std::vector<Vec3> &first,
+                RegrowthStats &stats)
+  {
     for (std::size_t n = 0; n < growing.size(); ++n) {
       Body &seed = bodies_[growing[n]];
+      show_twin(seed, false);
       seed.present = true;
       seed.x = first[n];
       seed.scale = kStartScale;
@@ -298,9 +312,17 @@ private:
     for (std::size_t i : growing) {
       Body &seed = bodies_[i];
       seed.placed = seed.present = clear;
-      if (!clear) seed.x = seed.x0;
+      if (!clear) {
+        seed.x = seed.x0;
+        show_twin(seed, true);
+      }
     }
-    return shrunk;
+  }
+
+  // The shrunk sphere of seed s (if any) present or not.
+  void show_twin(const Body &seed, bool present)
+  {
+    if (seed.twin >= 0) bodies_[static_cast<std::size_t>(seed.twin)].present = present;
   }
 
   // The deepest overlap of body i at its radius now, over the smaller radius.
@@ -345,6 +367,16 @@ private:
     seed.scale = 1;
     seed.x = seed.x0;
     growing.erase(std::find(growing.begin(), growing.end(), s));
+    if (seed.twin < 0) return;
+    // Its shrunk sphere comes back where it was and moves on with the zone
+    // (kept in the active spheres' id order).
+    const std::size_t t = static_cast<std::size_t>(seed.twin);
+    Body &shrunk = bodies_[t];
+    const auto to = std::lower_bound(active_.begin(), active_.end(), t);
+    saved_.insert(saved_.begin() + (to - active_.begin()), shrunk.x);
+    active_.insert(to, t);
+    shrunk.present = shrunk.active = true;
+    shrunk.w = 1;
   }
 
   // The zone's present movable spheres made active (in id order), their

@@ -8,9 +8,9 @@
 // each) one by one, a seed that cannot fit deleted and the zone left as it
 // was. The bars and everything beyond the zone are frozen, sizes never
 // change, and no pair overlaps more than it did at the start.
-// A target the relocation placed shrunk across thin bars is a seed too:
-// its shrunk sphere gives way while it tries its own radius, and stays
-// where that fails.
+// A target the relocation placed shrunk across thin bars is a seed too
+// (grown with the others): its shrunk sphere gives way while it tries its
+// own radius, and stays where that fails.
 #pragma once
 
 #include "reinforce_domain.h"

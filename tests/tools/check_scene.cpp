@@ -27,8 +27,10 @@
 // Overlap of spheres i, j: d = r_i + r_j - |x_i - x_j| (minimum image in
 // periodic dimensions, "pp" in the BOX BOUNDS line); a pair overlaps when
 // d > tol * min(r_i, r_j), a pair of a moved sphere when d > overlap-tol *
-// min(r_i, r_j) (the fix leaves them exact but for rounding). Exit status: 0 every check passed, 1
-// a check failed, 2 bad usage or unreadable input.
+// min(r_i, r_j) (the fix leaves them exact but for rounding) beyond what
+// the pair overlapped before (a pair of matrix spheres, or a matrix sphere
+// within tol of a bar: the packing's own). Exit status: 0 every check
+// passed, 1 a check failed, 2 bad usage or unreadable input.
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -751,14 +753,16 @@ int run_check(Options o)
     const bool ra = is_rebar(a.type), rb = is_rebar(b.type);
     if (ra && rb) return;    // bars may be clumps of overlapping spheres
     worst_all = std::max(worst_all, ov / rmin);
-    if ((moved[i] || moved[j]) && !ra && !rb) {
-      // Two matrix spheres that overlapped before, at the same radii: what
-      // the pair had is the packing's own (a DEM-settled packing has one at
-      // every contact); only what a move adds to it is the fix's.
+    if (moved[i] || moved[j]) {
+      // A pair that overlapped before, at the same radii: what it had is
+      // the packing's own (a DEM-settled packing has one at every contact,
+      // a matrix sphere may touch a bar within tol without being a target);
+      // only what a move adds to it is the fix's.
       const Atom *pa = before.find(a.id), *pb = before.find(b.id);
       if (pa && pb && pa->r == a.r && pb->r == b.r) {
         const double had = before.overlap(*pa, *pb);
-        if (had > 0) {
+        const bool own = !ra && !rb ? had > 0 : had > 0 && had <= o.tol * std::min(a.r, b.r);
+        if (own) {
           ++own_pairs;
           worst_own = std::max(worst_own, had / rmin);
           ov -= had;
