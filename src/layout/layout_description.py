@@ -5,6 +5,7 @@ checked here (finite numbers, the right count of components, known keys),
 and an error names the line.
 """
 import math
+import re
 
 
 class LayoutError(Exception):
@@ -54,6 +55,12 @@ def word(*choices):
     return parse
 
 
+def name(text):
+    if not re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", text):
+        raise ValueError("a name is a letter then letters, digits or _, got '%s'" % text)
+    return text
+
+
 def hook_angle(text):
     if text == "none":
         return None
@@ -65,7 +72,7 @@ def hook_angle(text):
 
 # The keys every clump item takes (their defaults from `defaults` lines).
 COMMON = {"diameter": number, "smoothness": number, "spacing": number, "type": integer,
-          "density": number}
+          "density": number, "name": name}
 HOOKS = {"hook_start": hook_angle, "hook_end": hook_angle, "hook_length": number,
          "hook_towards": vector(3), "bend": number}
 KINDS = {
@@ -151,6 +158,8 @@ def parse(text):
             continue
         item = parse_line(content, number_)
         if item.kind == "defaults":
+            if "name" in item.values:
+                raise LayoutError(number_, "name= is for one item, not for defaults")
             if "spacing" in item.values:
                 defaults.pop("smoothness", None)
             if "smoothness" in item.values:

@@ -4,6 +4,7 @@ spheres (a bar, one stirrup, one fibre), written as one molecule or one
 multisphere template.
 """
 import math
+import re
 
 import layout_paths as P
 import layout_spacing as S
@@ -74,6 +75,13 @@ class Chain:
         return centres
 
     def clump(self, name, centres):
+        """name: the kind and line (bar_l5, stirrup_l7_3), or the item's
+        name= in place of the kind and line (hoops_3; a cage's beam_stirrup_3)."""
+        given = self.item.get("name")
+        if given and self.item.kind == "cage":
+            name = given + "_" + re.sub(r"_l\d+", "", name)
+        elif given:
+            name = re.sub(r"^[a-z]+_l\d+", given, name)
         return Clump(name, self.item.line, self.radius, self.type, self.density, centres)
 
     def summary(self, what, count, spheres):

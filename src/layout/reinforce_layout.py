@@ -42,6 +42,10 @@ def lay_out(items):
             options.update(item.values)
         else:
             result = BUILDERS[item.kind](item)
+            names = set(c.name for c in clumps + templates)
+            for c in result[0] + (result[2] if len(result) > 2 else []):
+                if c.name in names:
+                    item.error("the name %s is taken by an earlier item" % c.name)
             clumps += result[0]
             summary += result[1].split("\n")
             templates += result[2] if len(result) > 2 else result[0]
