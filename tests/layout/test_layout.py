@@ -199,6 +199,16 @@ class Cage(unittest.TestCase):
             self.assertGreater(abs(y - 0.1), 0.05)
             self.assertGreater(abs(z - 0.125), 0.07)
 
+    def test_stirrups_item(self):
+        text = "stirrups axis=z from=0.1 to=0.5 every=0.15 centre=0.2,0.3 width=0.1 height=0.2 diameter=0.008\n"
+        centres, _, out = lay_out(text)
+        self.assertEqual(sorted(set(c[2] for c in centres)), [0.1, 0.25, 0.4])
+        self.assertIn("3 stirrups", out)
+        xs, ys = [c[0] for c in centres], [c[1] for c in centres]
+        self.assertAlmostEqual(max(xs) - min(xs) + 0.008, 0.1, delta=1e-12)
+        self.assertAlmostEqual(max(ys) - min(ys) + 0.008, 0.2, delta=1e-12)
+        self.assertAlmostEqual((max(xs) + min(xs)) / 2, 0.2, delta=1e-12)
+
     def test_bar_on_the_corner_arc(self):    # the corner's inner radius holds the bar
         self.check(0.012, 0.02)
 
@@ -369,7 +379,24 @@ class BadDescriptions(unittest.TestCase):
 
 class Outputs(unittest.TestCase):
     """The molecule file and the LIGGGHTS sphere list hold the data file's
-    spheres, relative to the clump's centre."""
+    spheres, relative to the clump's centre; clumps named as asked."""
+
+    def test_names(self):
+        text = ("bar from=0,0,0 to=1,0,0 diameter=0.01 name=top\n"
+                "cage axis=x from=0 to=1 centre=0.1,0.1 width=0.2 height=0.2 cover=0.02 every=0.5 "
+                "diameter=0.012 stirrup_diameter=0.006 name=beam\n"
+                "fibres lo=0,0,0 hi=0.1,0.1,0.1 length=0.03 diameter=0.001 count=3 seed=1\n")
+        status, _, err, folder = run(text, "molecules", "liggghts")
+        self.assertEqual(status, 0, err)
+        self.assertEqual(sorted(os.listdir(os.path.join(folder, "mol"))),
+                         ["beam_bar_1.mol", "beam_bar_2.mol", "beam_bar_3.mol", "beam_bar_4.mol",
+                          "beam_stirrup_1.mol", "beam_stirrup_2.mol", "beam_stirrup_3.mol", "fibre_l3.mol",
+                          "top.mol"])
+        variables = re.findall(r"^variable (\S+) string", read(os.path.join(folder, "templates.liggghts")), re.M)
+        self.assertEqual(len(variables), 9)
+        status, _, err, _ = run(text + "bar from=0,1,0 to=1,1,0 diameter=0.01 name=top\n", "data")
+        self.assertEqual(status, 1)
+        self.assertIn("line 4: the name top is taken by an earlier item", err)
 
     def test_molecule_and_template(self):
         text = "bar from=0.1,0.2,0.3 to=0.5,0.2,0.3 diameter=0.01 density=7850 hook_end=90\n"
