@@ -11,6 +11,7 @@ import layout_spacing as S
 
 AXES = {"x": (0, 1, 2), "y": (1, 0, 2), "z": (2, 0, 1)}    # axis, then the section's u, v
 HOOK_LENGTH = {90.0: 12.0, 135.0: 6.0, 180.0: 4.0}    # straight leg after the bend, in bar diameters
+MAX_SPHERES = 10 ** 7    # per clump and per repeat: beyond it a typo, not a scene
 
 
 class Clump:
@@ -65,7 +66,12 @@ class Chain:
         return step
 
     def chain(self, pieces, closed):
-        centres, actual = P.sample(pieces, self.step(pieces), closed)
+        step = self.step(pieces)
+        length = P.total_length(pieces)
+        if step * MAX_SPHERES < length:    # also a step that underflowed to 0
+            self.item.error("a clump %g long would need more than %d spheres at a step of %g: "
+                            "raise smoothness or spacing" % (length, MAX_SPHERES, step))
+        centres, actual = P.sample(pieces, step, closed)
         self.used.append(actual)
         ripple = S.straight_ripple(self.radius, actual)
         for p in pieces:
@@ -159,6 +165,8 @@ def positions(item, first, last, every):
         item.error("every must be > 0, got %g" % every)
     if last < first:
         item.error("to (%g) must not be below from (%g)" % (last, first))
+    if (last - first) / every > MAX_SPHERES:
+        item.error("every %g repeats more than %d times between %g and %g" % (every, MAX_SPHERES, first, last))
     n = int(math.floor((last - first) / every * (1.0 + 1e-12))) + 1
     return [first + k * every for k in range(n)]
 

@@ -40,8 +40,8 @@ class Spacing(unittest.TestCase):
     at most smoothness * r, the fewest spheres that keep it, and the
     envelope measured on the written spheres."""
 
-    def check(self, r, q, length):
-        text = "bar from=0,0,0 to=%r,0,0 diameter=%r smoothness=%r\n" % (length, 2 * r, q)
+    def check(self, r, q, length, x0=0.0):
+        text = "bar from=%r,0,0 to=%r,0,0 diameter=%r smoothness=%r\n" % (x0, x0 + length, 2 * r, q)
         centres, radii, out = lay_out(text)
         gaps = [dist(a, b) for a, b in zip(centres, centres[1:])]
         s_max = 2 * r * math.sqrt(1 - (1 - q) ** 2)
@@ -49,7 +49,7 @@ class Spacing(unittest.TestCase):
         self.assertGreater(length / (len(centres) - 2), s_max, "one sphere fewer would do")
         self.assertLess(max(gaps) - min(gaps), EXACT * length)
         # The envelope between the first two spheres, probed across.
-        worst = min(ray_reach((gaps[0] * t / 50, 0, 0), (0, 0, 1), centres[:3], r) for t in range(51))
+        worst = min(ray_reach((x0 + gaps[0] * t / 50, 0, 0), (0, 0, 1), centres[:3], r) for t in range(51))
         ripple = 1 - worst / r
         self.assertLessEqual(ripple, q * (1 + 1e-9))
         self.assertAlmostEqual(ripple, 1 - math.sqrt(1 - (gaps[0] / (2 * r)) ** 2), delta=1e-9)
@@ -65,8 +65,8 @@ class Spacing(unittest.TestCase):
     def test_rough(self):
         self.check(0.005, 0.357, 0.49)
 
-    def test_tiny_and_far(self):    # micro units, far from the origin
-        self.check(1e-6, 0.05, 3e-4)
+    def test_tiny_and_far(self):    # micro units, far from the origin (a metre: 1e6 radii)
+        self.check(1e-6, 0.05, 3e-4, 1.0)
 
     def test_spacing_key_is_a_largest_spacing(self):
         centres, _, out = lay_out("bar from=0.005,0.04,0.04 to=0.495,0.04,0.04 diameter=0.01 spacing=0.00766\n")
@@ -358,6 +358,11 @@ class BadDescriptions(unittest.TestCase):
         ("cage axis=x from=0 to=1 centre=0,0 width=0.1 height=0.1 cover=0.06 every=0.1 diameter=0.01 "
          "stirrup_diameter=0.006", "leaves no room"),
         ("mesh corner=0,0,0 a=1,0,0 b=2,0,0 every_a=0.1 every_b=0.1 diameter=0.01", "parallel"),
+        ("bar from=0,0,0 to=1,0,0 diameter=0.01 smoothness=1e-300", "would need more than"),
+        ("stirrups axis=x from=0 to=1 every=1e-300 centre=0,0 width=0.1 height=0.1 diameter=0.01",
+         "repeats more than"),
+        ("polyline points=0,0,0;0,0,0;1,0,0 diameter=0.01", "zero-length segment"),
+        ("bar from=0,0,0 to=0,0,1 diameter=0.01 hook_end=90", "parallel to the bar's end"),
     ]
 
     def test_each(self):
