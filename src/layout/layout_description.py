@@ -1,5 +1,6 @@
-"""The description format: one item per line, `KIND key=value ...`,
-comments from # to the end of a line. Values are numbers, vectors
+"""The description format: one item per line, `KIND key=value ...`
+(a line ending in & goes on on the next), comments from # to the end of a
+line. Values are numbers, vectors
 (`x,y,z`), point lists (`x,y,z;x,y,z;...`) or words. Every value is
 checked here (finite numbers, the right count of components, known keys),
 and an error names the line.
@@ -148,14 +149,30 @@ def parse_line(text, line):
     return Item(kind, line, values)
 
 
-def parse(text):
-    """Items of the description, `defaults` merged into every later item."""
-    items = []
-    defaults = {}
+def logical_lines(text):
+    """(first line number, text) of each item: comments and blank lines
+    dropped, a line ending in & continued on the next (as in LAMMPS)."""
+    first, parts = None, []
     for number_, raw in enumerate(text.splitlines(), start=1):
         content = raw.split("#", 1)[0].strip()
         if not content:
             continue
+        if first is None:
+            first = number_
+        more = content.endswith("&")
+        parts.append(content[:-1] if more else content)
+        if not more:
+            yield first, " ".join(parts)
+            first, parts = None, []
+    if parts:
+        raise LayoutError(first, "the item ends with & but no line follows")
+
+
+def parse(text):
+    """Items of the description, `defaults` merged into every later item."""
+    items = []
+    defaults = {}
+    for number_, content in logical_lines(text):
         item = parse_line(content, number_)
         if item.kind == "defaults":
             if "name" in item.values:

@@ -10,6 +10,7 @@ description stops it with one ERROR line naming the line, status 1.
 """
 import argparse
 import os
+import signal
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
@@ -101,4 +102,5 @@ def main(argv):
 
 
 if __name__ == "__main__":
+    signal.signal(signal.SIGPIPE, signal.SIG_DFL)    # `| head`: stop quietly, as a shell tool does
     sys.exit(main(sys.argv[1:]))

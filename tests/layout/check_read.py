@@ -6,7 +6,6 @@ written, and the clump's spheres (type 3) where the data file has them, to
 1e-12 of the box; the log's clump mass is the molecule's.
 liggghts: the dump holds the clump's spheres only, in the molecule file's
 shape (each sphere's offset from the clump's mean) to 1e-9 of the box."""
-import math
 import re
 import sys
 

@@ -16,7 +16,10 @@ top=$here/../..
 . "$here/../scripts/test_env.sh" "layout_example_${example}"
 layout=$build/src/layout/reinforce_layout
 fail() { echo "FAIL: $*"; exit 1; }
-numbers() { awk '/^Atoms/ {a = 1; next} a && NF == 7 {printf "%s %s %.17g %.17g %.17g %.17g %.17g\n", $1, $2, $3, $4, $5, $6, $7}' "$1"; }
+numbers() {    # the atoms of a data file, every number as the double it reads as
+  awk '/^Atoms/ {a = 1; next}
+       a && NF == 7 {printf "%s %s %.17g %.17g %.17g %.17g %.17g\n", $1, $2, $3, $4, $5, $6, $7}' "$1"
+}
 case $example in
   beam)
     (cd "$top/examples/beam" && "$layout" bars.layout --data "$work/bars.data" > /dev/null)
@@ -38,7 +41,8 @@ case $example in
     echo "PASS: bar_template.liggghts is what make_bars.sh (the layout command) writes"
     made=$(sed -n 's/^variable bar string "nspheres 25 ntry 1000000 spheres \(.*\)"$/\1/p' "$work/bar.liggghts" |
            awk '{for (i = 1; i <= NF; i++) printf "%.17g\n", $i}')
-    typed=$(awk 'BEGIN {for (i = 0; i < 25; i++) printf "%.17g\n%.17g\n%.17g\n%.17g\n", sprintf("%.4f", -0.09 + 0.0075 * i), 0, 0, 0.005}')
+    typed=$(awk 'BEGIN {for (i = 0; i < 25; i++)
+                          printf "%.17g\n%.17g\n%.17g\n%.17g\n", sprintf("%.4f", -0.09 + 0.0075 * i), 0, 0, 0.005}')
     [ "$made" = "$typed" ] || fail "the sphere list differs from the typed one"
     echo "PASS: the 25 spheres equal the list typed before exactly"
     ;;

@@ -376,6 +376,14 @@ class BadDescriptions(unittest.TestCase):
                 self.assertRegex(lines[0], r"^reinforce_layout: ERROR: \S*description.txt line 3: ")
                 self.assertIn(message, lines[0])
 
+    def test_continued_item_names_its_first_line(self):
+        status, _, err, _ = run("# two items\nbar from=0,0,0 &\n  # a comment inside\n  to=1,0,0 diameter=0.01\n"
+                                "bar from=0,0,0 &\n    to=1,0,0 &\n    diameter=-1\n")
+        self.assertEqual(status, 1)
+        self.assertIn("line 5: diameter must be > 0", err)
+        status, _, err, _ = run("bar from=0,0,0 to=1,0,0 diameter=0.01 &\n")
+        self.assertIn("line 1: the item ends with & but no line follows", err)
+
     def test_good_lines_before_a_bad_one(self):
         status, _, err, _ = run("bar from=0,0,0 to=1,0,0 diameter=0.01\nbar from=0,0,0 to=1,0,0 diameter=0\n")
         self.assertEqual(status, 1)
