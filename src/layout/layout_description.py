@@ -94,7 +94,7 @@ KINDS = {
     "fibres": dict(COMMON, lo=vector(3), hi=vector(3), length=number, count=integer,
                    fraction=number, orientation=word("isotropic", "plane"),
                    normal=word("x", "y", "z"), seed=integer, apart=word("yes", "no"),
-                   tries=integer),
+                   tries=integer, templates=word("one", "each")),
 }
 REQUIRED = {
     "box": ("lo", "hi"),

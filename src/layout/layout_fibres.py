@@ -124,4 +124,6 @@ def build_fibres(item):
     summary = chain.summary("fibres", count, count * len(template)) + (
         "; volume fraction %.6g (as spherocylinders of the length and diameter), %s" %
         (achieved, "apart" if apart else "may cross"))
+    if item.get("templates", "one") == "each":
+        return clumps, summary, clumps    # a molecule file and sphere list per fibre, in place
     return clumps, summary, [chain.clump("fibre_l%d" % item.line, template)]

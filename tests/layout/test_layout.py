@@ -407,6 +407,9 @@ class Outputs(unittest.TestCase):
                           "top.mol"])
         variables = re.findall(r"^variable (\S+) string", read(os.path.join(folder, "templates.liggghts")), re.M)
         self.assertEqual(len(variables), 9)
+        status, _, err, folder = run(text.replace("seed=1", "seed=1 templates=each"), "molecules")
+        self.assertEqual(sorted(f for f in os.listdir(os.path.join(folder, "mol")) if f.startswith("fibre")),
+                         ["fibre_l3_1.mol", "fibre_l3_2.mol", "fibre_l3_3.mol"])
         status, _, err, _ = run(text + "bar from=0,1,0 to=1,1,0 diameter=0.01 name=top\n", "data")
         self.assertEqual(status, 1)
         self.assertIn("line 4: the name top is taken by an earlier item", err)
