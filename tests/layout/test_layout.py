@@ -1,0 +1,441 @@
+"""Geometry of what reinforce_layout writes, checked on its data file (the
+expected values computed here from the description, independently of the
+command's code). Run by ctest one class at a time:
+    REINFORCE_LAYOUT=build/src/layout/reinforce_layout python3 -m unittest -v test_layout.Spacing
+"""
+import math
+import os
+import random
+import re
+import unittest
+
+from layout_output import atoms, lay_out, run
+
+EXACT = 1e-12    # relative: rounding of a few operations
+
+
+def read(path, mode="r"):
+    with open(path, mode) as f:
+        return f.read()
+
+
+def dist(a, b):
+    return math.sqrt(sum((a[k] - b[k]) ** 2 for k in range(3)))
+
+
+def ray_reach(origin, direction, centres, radius):
+    """How far the union of spheres reaches along a ray (0 if it misses)."""
+    best = 0.0
+    for c in centres:
+        w = [origin[k] - c[k] for k in range(3)]
+        b = sum(w[k] * direction[k] for k in range(3))
+        q = b * b - (sum(v * v for v in w) - radius * radius)
+        if q >= 0.0:
+            best = max(best, -b + math.sqrt(q))
+    return best
+
+
+class Spacing(unittest.TestCase):
+    """Spacing and ripple as asked: the largest spacing whose envelope dips
+    at most smoothness * r, the fewest spheres that keep it, and the
+    envelope measured on the written spheres."""
+
+    def check(self, r, q, length, x0=0.0):
+        text = "bar from=%r,0,0 to=%r,0,0 diameter=%r smoothness=%r\n" % (x0, x0 + length, 2 * r, q)
+        centres, radii, out = lay_out(text)
+        gaps = [dist(a, b) for a, b in zip(centres, centres[1:])]
+        s_max = 2 * r * math.sqrt(1 - (1 - q) ** 2)
+        self.assertTrue(all(g <= s_max * (1 + EXACT) for g in gaps), "spacing above the smoothness's")
+        self.assertGreater(length / (len(centres) - 2), s_max, "one sphere fewer would do")
+        self.assertLess(max(gaps) - min(gaps), EXACT * length)
+        # The envelope between the first two spheres, probed across.
+        worst = min(ray_reach((x0 + gaps[0] * t / 50, 0, 0), (0, 0, 1), centres[:3], r) for t in range(51))
+        ripple = 1 - worst / r
+        self.assertLessEqual(ripple, q * (1 + 1e-9))
+        self.assertAlmostEqual(ripple, 1 - math.sqrt(1 - (gaps[0] / (2 * r)) ** 2), delta=1e-9)
+        said = re.search(r"spacing ([0-9.e+-]+) to ([0-9.e+-]+).*largest ripple ([0-9.e+-]+)", out)
+        self.assertIsNotNone(said, out)
+        self.assertAlmostEqual(float(said.group(1)), gaps[0], delta=1e-5 * gaps[0])
+        self.assertAlmostEqual(float(said.group(3)), ripple, delta=1e-3 * ripple)
+        self.assertTrue(all(x == r for x in radii))
+
+    def test_smooth(self):
+        self.check(0.005, 0.01, 0.49)
+
+    def test_rough(self):
+        self.check(0.005, 0.357, 0.49)
+
+    def test_tiny_and_far(self):    # micro units, far from the origin (a metre: 1e6 radii)
+        self.check(1e-6, 0.05, 3e-4, 1.0)
+
+    def test_spacing_key_is_a_largest_spacing(self):
+        centres, _, out = lay_out("bar from=0.005,0.04,0.04 to=0.495,0.04,0.04 diameter=0.01 spacing=0.00766\n")
+        self.assertEqual(len(centres), 65)
+        self.assertIn("spacing 0.00765625", out)
+
+    def test_header_says_the_spacing(self):
+        status, out, err, folder = run("bar from=0,0,0 to=1,0,0 diameter=0.1 smoothness=0.1\n", "data")
+        header = read(os.path.join(folder, "rebar.data")).split("atoms")[0]
+        self.assertRegex(header, r"# line 1 bar: .*spacing [0-9.]+ to [0-9.]+ \(smoothness 0.1 asked\)")
+
+
+class Ends(unittest.TestCase):
+    """The first and last sphere exactly at the ends asked; hooks ending
+    where their bend radius and leg put them."""
+
+    def test_straight_ends_exact(self):
+        a, b = (0.1, -0.2, 0.3), (0.7, 0.4, -0.05)
+        centres, _, _ = lay_out("bar from=%r,%r,%r to=%r,%r,%r diameter=0.02\n" % (a + b))
+        self.assertEqual(centres[0], a)
+        self.assertEqual(centres[-1], b)
+
+    def hook_end(self, angle, leg):
+        d, mandrel = 0.01, 0.03
+        rc = mandrel + d / 2
+        text = ("bar from=0,0,0 to=1,0,0 diameter=%r bend=%r hook_end=%d hook_length=%r hook_towards=0,0,1\n"
+                % (d, mandrel, angle, leg))
+        centres, _, _ = lay_out(text)
+        t = math.radians(angle)
+        arc_end = (1 + rc * math.sin(t), 0, rc * (1 - math.cos(t)))
+        return centres, [arc_end[0] + leg * math.cos(t), 0, arc_end[2] + leg * math.sin(t)]
+
+    def test_hooks(self):
+        for angle in (90, 135, 180):
+            centres, expected = self.hook_end(angle, 0.1)
+            self.assertLess(dist(centres[-1], expected), 1e-12, "hook %d" % angle)
+            self.assertEqual(centres[0], (0.0, 0.0, 0.0))
+
+    def test_hook_at_start_mirrors_the_end(self):
+        text = "bar from=0,0,0 to=1,0,0 diameter=0.01 hook_start=180 hook_length=0.05 hook_towards=0,1,0\n"
+        centres, _, _ = lay_out(text)
+        rc = 0.02 + 0.005
+        self.assertLess(dist(centres[0], (0.05, 2 * rc, 0)), 1e-12)
+        self.assertEqual(centres[-1], (1.0, 0.0, 0.0))
+
+
+class Bends(unittest.TestCase):
+    """A polyline's corner is an arc: centres on it at mandrel + bar radius
+    from the bend's centre, the straight parts on their lines, and the
+    ripple on the outside of the bend within the smoothness."""
+
+    def test_right_angle(self):
+        d, mandrel, q = 0.01, 0.02, 0.05
+        rc = mandrel + d / 2
+        text = "polyline points=0,0,0;0.3,0,0;0.3,0.2,0 bend=%r diameter=%r smoothness=%r\n" % (mandrel, d, q)
+        centres, _, _ = lay_out(text)
+        centre = (0.3 - rc, rc, 0.0)
+        on_arc = 0
+        for c in centres:
+            self.assertEqual(c[2], 0.0)
+            if c[0] > 0.3 - rc + 1e-12 and c[1] < rc - 1e-12:
+                on_arc += 1
+                self.assertAlmostEqual(dist(c, centre), rc, delta=1e-12)
+            elif c[1] < rc - 1e-12:
+                self.assertEqual(c[1], 0.0) if c[0] < 0.3 - rc - 1e-9 else None
+            else:
+                self.assertAlmostEqual(c[0], 0.3, delta=1e-12)
+        self.assertGreater(on_arc, 3)
+        # No sphere near the kink's corner: the path is rounded.
+        self.assertGreater(min(dist(c, (0.3, 0, 0)) for c in centres), rc * (math.sqrt(2) - 1) * 0.99)
+        # The envelope on the outside of the bend, probed radially.
+        worst = 1.0
+        for k in range(1, 200):
+            a = -math.pi / 2 + (math.pi / 2) * k / 200
+            n = (math.cos(a), math.sin(a), 0.0)
+            o = (centre[0] + rc * n[0], centre[1] + rc * n[1], 0.0)
+            worst = min(worst, ray_reach(o, n, centres, d / 2) / (d / 2))
+        self.assertGreaterEqual(worst, 1 - q - 1e-9)
+
+    def test_corners_in_3d_and_straight_on(self):
+        text = "polyline points=0,0,0;0.1,0,0;0.2,0,0;0.2,0.1,0.1 bend=0.01 diameter=0.005\n"
+        centres, _, _ = lay_out(text)
+        self.assertEqual(centres[0], (0.0, 0.0, 0.0))
+        self.assertEqual(centres[-1], (0.2, 0.1, 0.1))
+        gaps = [dist(a, b) for a, b in zip(centres, centres[1:])]
+        self.assertLess(max(gaps), 0.005)
+
+
+class Cage(unittest.TestCase):
+    """Stirrups closed and at their spacing; the longitudinal bars inside
+    the stirrups' corners, touching the inner corner."""
+
+    TEXT = ("cage axis=x from=0.03 to=0.47 centre=0.1,0.125 width=0.2 height=0.25 cover=0.02 "
+            "diameter=%r stirrup_diameter=0.006 every=0.07 stirrups_from=0.04 bars_bottom=3 bars_top=2 "
+            "stirrup_bend=%r smoothness=0.02\n")
+
+    def lay(self, db, mandrel):
+        centres, radii, _ = lay_out(self.TEXT % (db, mandrel))
+        stirrup = [c for c, r in zip(centres, radii) if r == 0.003]
+        bars = [c for c, r in zip(centres, radii) if r == db / 2]
+        return stirrup, bars
+
+    def check(self, db, mandrel):
+        stirrup, bars = self.lay(db, mandrel)
+        rs, rb = 0.003, db / 2
+        planes = sorted(set(c[0] for c in stirrup))
+        self.assertEqual(planes, [0.04 + 0.07 * k for k in range(7)])
+        first = [c for c in stirrup if c[0] == planes[0]]
+        gaps = [dist(a, b) for a, b in zip(first, first[1:] + first[:1])]    # closed loop
+        # Equal arc-length steps: the closing step (on the bottom leg) as
+        # long as the first, the chords on the corners shorter.
+        self.assertAlmostEqual(gaps[-1], gaps[0], delta=1e-12)
+        self.assertLessEqual(max(gaps), gaps[0] * (1 + 1e-12))
+        # Outer size of the stirrup: section minus cover.
+        self.assertAlmostEqual(max(c[1] for c in first) - min(c[1] for c in first) + 2 * rs, 0.16, delta=1e-12)
+        self.assertAlmostEqual(max(c[2] for c in first) - min(c[2] for c in first) + 2 * rs, 0.21, delta=1e-12)
+        axes = sorted(set((c[1], c[2]) for c in bars))
+        self.assertEqual(len(axes), 5)
+        ys = [a[0] for a in axes]
+        corner = [a for a in axes if a[0] in (min(ys), max(ys))]
+        self.assertEqual(len(corner), 4)
+        for y, z in corner:
+            near = min(math.hypot(c[1] - y, c[2] - z) for c in first)
+            # touching: the centres rb + rs apart, the chords only shorten it
+            self.assertGreaterEqual(near, (rb + rs) * (1 - 1e-12))
+            self.assertLess(near, rb + rs + 0.02 * rs * 2)
+            self.assertTrue(min(c[1] for c in first) < y < max(c[1] for c in first))
+            self.assertTrue(min(c[2] for c in first) < z < max(c[2] for c in first))
+            # in the corner: nearer the corner than the section's middle
+            self.assertGreater(abs(y - 0.1), 0.05)
+            self.assertGreater(abs(z - 0.125), 0.07)
+
+    def test_stirrups_item(self):
+        text = "stirrups axis=z from=0.1 to=0.5 every=0.15 centre=0.2,0.3 width=0.1 height=0.2 diameter=0.008\n"
+        centres, _, out = lay_out(text)
+        self.assertEqual(sorted(set(c[2] for c in centres)), [0.1, 0.25, 0.4])
+        self.assertIn("3 stirrups", out)
+        xs, ys = [c[0] for c in centres], [c[1] for c in centres]
+        self.assertAlmostEqual(max(xs) - min(xs) + 0.008, 0.1, delta=1e-12)
+        self.assertAlmostEqual(max(ys) - min(ys) + 0.008, 0.2, delta=1e-12)
+        self.assertAlmostEqual((max(xs) + min(xs)) / 2, 0.2, delta=1e-12)
+
+    def test_bar_on_the_corner_arc(self):    # the corner's inner radius holds the bar
+        self.check(0.012, 0.02)
+
+    def test_bar_on_both_legs(self):    # a tight corner: the bar rests on both legs
+        self.check(0.02, 0.006)
+
+
+class Mesh(unittest.TestCase):
+    def test_two_families(self):
+        text = "mesh corner=0,0,0.1 a=0.4,0,0 b=0,0.3,0 every_a=0.1 every_b=0.1 diameter=0.008 diameter_b=0.006\n"
+        centres, radii, _ = lay_out(text)
+        a_bars = sorted(set(c[1] for c, r in zip(centres, radii) if r == 0.004))
+        b_bars = sorted(set(c[0] for c, r in zip(centres, radii) if r == 0.003))
+        self.assertEqual(len(a_bars), 4)
+        self.assertEqual(len(b_bars), 5)
+        self.assertTrue(all(c[2] == 0.1 for c, r in zip(centres, radii) if r == 0.004))
+        self.assertTrue(all(abs(c[2] - 0.107) < 1e-15 for c, r in zip(centres, radii) if r == 0.003))
+
+
+def segment_distance_search(p0, p1, q0, q1):
+    """Distance between segments by golden-section search over the first
+    segment (distance to the second is convex along it)."""
+    def to_second(s):
+        p = [p0[k] + (p1[k] - p0[k]) * s for k in range(3)]
+        d = [q1[k] - q0[k] for k in range(3)]
+        t = sum((p[k] - q0[k]) * d[k] for k in range(3)) / sum(v * v for v in d)
+        t = min(1.0, max(0.0, t))
+        return dist(p, [q0[k] + d[k] * t for k in range(3)])
+    lo, hi = 0.0, 1.0
+    g = (math.sqrt(5) - 1) / 2
+    for _ in range(80):
+        a, b = hi - g * (hi - lo), lo + g * (hi - lo)
+        if to_second(a) < to_second(b):
+            hi = b
+        else:
+            lo = a
+    return min(to_second(0.5 * (lo + hi)), to_second(0.0), to_second(1.0))
+
+
+class Fibres(unittest.TestCase):
+    """Random fibres: inside their box, at their volume fraction, isotropic
+    or in a plane, apart when asked, the same bytes from the same seed."""
+    LO, HI = (0.0, 0.0, 0.0), (0.1, 0.08, 0.06)
+
+    def fibres(self, extra, length=0.03, d=0.002):
+        text = "fibres lo=0,0,0 hi=0.1,0.08,0.06 length=%r diameter=%r %s\n" % (length, d, extra)
+        centres, radii, out = lay_out(text)
+        n = int(re.search(r"fibres: (\d+) fibres", out).group(1))
+        per = len(centres) // n
+        self.assertEqual(per * n, len(centres))
+        return [centres[k * per:(k + 1) * per] for k in range(n)], radii[0], out
+
+    def test_inside_the_box(self):
+        fibres, r, _ = self.fibres("count=300 seed=3")
+        for f in fibres:
+            for c in f:
+                for k in range(3):
+                    self.assertGreaterEqual(c[k] - r, self.LO[k])
+                    self.assertLessEqual(c[k] + r, self.HI[k])
+            self.assertAlmostEqual(dist(f[0], f[-1]) + 2 * r, 0.03, delta=1e-12)
+
+    def test_volume_fraction(self):
+        fraction, length, d = 0.02, 0.03, 0.002
+        fibres, r, out = self.fibres("fraction=%r seed=11" % fraction, length, d)
+        volume = 0.1 * 0.08 * 0.06
+        one = math.pi * r * r * (length - d) + 4 / 3 * math.pi * r ** 3
+        self.assertLessEqual(abs(len(fibres) * one - fraction * volume), 0.5 * one)
+        # Measured: points at random, the share inside a sphere of a fibre.
+        rng = random.Random(1)
+        n, inside = 20000, 0
+        cells = {}
+        for f in fibres:
+            for c in f:
+                cells.setdefault(tuple(int(c[k] / 0.004) for k in range(3)), []).append(c)
+        for _ in range(n):
+            p = (0.1 * rng.random(), 0.08 * rng.random(), 0.06 * rng.random())
+            key = tuple(int(p[k] / 0.004) for k in range(3))
+            if any(dist(p, c) <= r for i in (-1, 0, 1) for j in (-1, 0, 1) for k in (-1, 0, 1)
+                   for c in cells.get((key[0] + i, key[1] + j, key[2] + k), ())):
+                inside += 1
+        sigma = math.sqrt(fraction * (1 - fraction) / n)
+        # The chain is smaller than the spherocylinder by its ripple (<= 5%).
+        self.assertLess(abs(inside / n - fraction), 4 * sigma + 0.05 * fraction)
+
+    def test_isotropic(self):
+        fibres, _, _ = self.fibres("count=400 seed=5", 0.01, 0.001)
+        cosines = [abs(f[-1][2] - f[0][2]) / dist(f[0], f[-1]) for f in fibres]
+        mean = sum(cosines) / len(cosines)    # uniform on the sphere: |cos| has mean 1/2, sd 1/sqrt(12)
+        self.assertLess(abs(mean - 0.5), 4 / math.sqrt(12 * len(cosines)))
+
+    def test_in_a_plane(self):
+        fibres, _, _ = self.fibres("count=50 seed=5 orientation=plane normal=y", 0.02, 0.001)
+        for f in fibres:
+            self.assertLess(abs(f[-1][1] - f[0][1]), 1e-12)
+
+    def test_apart(self):
+        fibres, r, out = self.fibres("fraction=0.03 seed=7 apart=yes", 0.03, 0.002)
+        self.assertIn("apart", out)
+        closest = 1.0
+        for i, f in enumerate(fibres):
+            for g in fibres[i + 1:]:
+                if dist(f[len(f) // 2], g[len(g) // 2]) < 0.03:
+                    closest = min(closest, segment_distance_search(f[0], f[-1], g[0], g[-1]))
+        self.assertGreaterEqual(closest, 2 * r * (1 - 1e-9))
+
+    def test_without_apart_they_cross(self):    # the test above can fail
+        fibres, r, _ = self.fibres("fraction=0.03 seed=7", 0.03, 0.002)
+        closest = min(segment_distance_search(f[0], f[-1], g[0], g[-1])
+                      for i, f in enumerate(fibres) for g in fibres[i + 1:]
+                      if dist(f[len(f) // 2], g[len(g) // 2]) < 0.03)
+        self.assertLess(closest, 2 * r)
+
+    def test_same_seed_same_bytes(self):
+        text = "fibres lo=0,0,0 hi=0.1,0.1,0.1 length=0.03 diameter=0.001 count=100 seed=42 apart=yes\n"
+        written = []
+        for _ in range(2):
+            status, _, err, folder = run(text, "data", "liggghts")
+            self.assertEqual(status, 0, err)
+            written.append(read(os.path.join(folder, "rebar.data"), "rb"))
+        self.assertEqual(written[0], written[1])
+        _, _, _, folder = run(text.replace("seed=42", "seed=43"), "data")
+        self.assertNotEqual(read(os.path.join(folder, "rebar.data"), "rb"), written[0])
+
+
+class BadDescriptions(unittest.TestCase):
+    """A bad description: status 1, one ERROR line on stderr naming the
+    line and the fault, nothing on stdout."""
+    CASES = [
+        ("bar from=0,0,0 to=0,0,0 diameter=0.01", "zero-length bar"),
+        ("bar from=0,0,0 to=1,0,0 diameter=-0.01", "diameter must be > 0"),
+        ("polyline points=0,0,0;1,0,0;1,1,0 diameter=0.01 bend=0.002", "tighter than the bar"),
+        ("fibres lo=0,0,0 hi=0.02,0.1,0.1 length=0.03 diameter=0.001 count=5 seed=1", "longer than its box"),
+        ("bar from=0,0,0 to=1,0,0 diameter=0.01 colour=red", "unknown key 'colour'"),
+        ("bar from=0,0,0 to=nan,0,0 diameter=0.01", "expected a finite number, got 'nan'"),
+        ("bar from=0,0,0 to=1,0,0 diameter=inf", "expected a finite number, got 'inf'"),
+        ("bar from=0,0,0 to=1,0,0 diameter=0.01 spacing=-1e400", "expected a finite number"),
+        ("bar from=0,0,0 to=1,0 diameter=0.01", "expected 3 comma-separated numbers"),
+        ("rod from=0,0,0 to=1,0,0", "unknown item 'rod'"),
+        ("bar to=1,0,0 diameter=0.01", "bar needs from="),
+        ("bar from=0,0,0 to=1,0,0 diameter=0.01 smoothness=1.5", "smoothness must be > 0 and < 1"),
+        ("bar from=0,0,0 to=1,0,0 diameter=0.01 spacing=0.02", "spacing must be > 0 and < the diameter"),
+        ("bar from=0,0,0 to=1,0,0 diameter=0.01 hook_end=45", "a hook is 90, 135, 180 or none"),
+        ("polyline points=0,0,0;1,0,0;0,0,0 diameter=0.01", "turns back on itself"),
+        ("polyline points=0,0,0;0.05,0,0;0.05,0.05,0 diameter=0.01 bend=0.1", "do not fit"),
+        ("fibres lo=0,0,0 hi=0.1,0.1,0.1 length=0.05 diameter=0.01 count=5000 seed=1 apart=yes tries=20",
+         "found no place apart"),
+        ("cage axis=x from=0 to=1 centre=0,0 width=0.1 height=0.1 cover=0.06 every=0.1 diameter=0.01 "
+         "stirrup_diameter=0.006", "leaves no room"),
+        ("mesh corner=0,0,0 a=1,0,0 b=2,0,0 every_a=0.1 every_b=0.1 diameter=0.01", "parallel"),
+        ("bar from=0,0,0 to=1,0,0 diameter=0.01 smoothness=1e-300", "would need more than"),
+        ("stirrups axis=x from=0 to=1 every=1e-300 centre=0,0 width=0.1 height=0.1 diameter=0.01",
+         "repeats more than"),
+        ("polyline points=0,0,0;0,0,0;1,0,0 diameter=0.01", "zero-length segment"),
+        ("bar from=0,0,0 to=0,0,1 diameter=0.01 hook_end=90", "parallel to the bar's end"),
+    ]
+
+    def test_each(self):
+        for text, message in self.CASES:
+            with self.subTest(text=text):
+                status, out, err, _ = run("# a comment line\n\n" + text + "   # trailing comment\n", "data")
+                self.assertEqual(status, 1)
+                self.assertEqual(out, "")
+                lines = err.strip().splitlines()
+                self.assertEqual(len(lines), 1, err)
+                self.assertRegex(lines[0], r"^reinforce_layout: ERROR: \S*description.txt line 3: ")
+                self.assertIn(message, lines[0])
+
+    def test_continued_item_names_its_first_line(self):
+        status, _, err, _ = run("# two items\nbar from=0,0,0 &\n  # a comment inside\n  to=1,0,0 diameter=0.01\n"
+                                "bar from=0,0,0 &\n    to=1,0,0 &\n    diameter=-1\n")
+        self.assertEqual(status, 1)
+        self.assertIn("line 5: diameter must be > 0", err)
+        status, _, err, _ = run("bar from=0,0,0 to=1,0,0 diameter=0.01 &\n")
+        self.assertIn("line 1: the item ends with & but no line follows", err)
+
+    def test_good_lines_before_a_bad_one(self):
+        status, _, err, _ = run("bar from=0,0,0 to=1,0,0 diameter=0.01\nbar from=0,0,0 to=1,0,0 diameter=0\n")
+        self.assertEqual(status, 1)
+        self.assertIn("line 2: diameter must be > 0", err)
+
+
+class Outputs(unittest.TestCase):
+    """The molecule file and the LIGGGHTS sphere list hold the data file's
+    spheres, relative to the clump's centre; clumps named as asked."""
+
+    def test_names(self):
+        text = ("bar from=0,0,0 to=1,0,0 diameter=0.01 name=top\n"
+                "cage axis=x from=0 to=1 centre=0.1,0.1 width=0.2 height=0.2 cover=0.02 every=0.5 "
+                "diameter=0.012 stirrup_diameter=0.006 name=beam\n"
+                "fibres lo=0,0,0 hi=0.1,0.1,0.1 length=0.03 diameter=0.001 count=3 seed=1\n")
+        status, _, err, folder = run(text, "molecules", "liggghts")
+        self.assertEqual(status, 0, err)
+        self.assertEqual(sorted(os.listdir(os.path.join(folder, "mol"))),
+                         ["beam_bar_1.mol", "beam_bar_2.mol", "beam_bar_3.mol", "beam_bar_4.mol",
+                          "beam_stirrup_1.mol", "beam_stirrup_2.mol", "beam_stirrup_3.mol", "fibre_l3.mol",
+                          "top.mol"])
+        variables = re.findall(r"^variable (\S+) string", read(os.path.join(folder, "templates.liggghts")), re.M)
+        self.assertEqual(len(variables), 9)
+        status, _, err, folder = run(text.replace("seed=1", "seed=1 templates=each"), "molecules")
+        self.assertEqual(sorted(f for f in os.listdir(os.path.join(folder, "mol")) if f.startswith("fibre")),
+                         ["fibre_l3_1.mol", "fibre_l3_2.mol", "fibre_l3_3.mol"])
+        status, _, err, _ = run(text + "bar from=0,1,0 to=1,1,0 diameter=0.01 name=top\n", "data")
+        self.assertEqual(status, 1)
+        self.assertIn("line 4: the name top is taken by an earlier item", err)
+
+    def test_molecule_and_template(self):
+        text = "bar from=0.1,0.2,0.3 to=0.5,0.2,0.3 diameter=0.01 density=7850 hook_end=90\n"
+        status, _, err, folder = run(text, "data", "molecules", "liggghts")
+        self.assertEqual(status, 0, err)
+        rows = atoms(os.path.join(folder, "rebar.data"))
+        centre = [sum(r[2 + k] for r in rows) / len(rows) for k in range(3)]
+        mol = read(os.path.join(folder, "mol", "bar_l1.mol"))
+        coords = re.search(r"Coords\n\n(.*?)\n\n", mol, re.S).group(1).splitlines()
+        self.assertEqual(len(coords), len(rows))
+        for line, row in zip(coords, rows):
+            v = [float(x) for x in line.split()[1:]]
+            self.assertLess(dist([v[k] + centre[k] for k in range(3)], row[2:]), 1e-15)
+        masses = re.search(r"Masses\n\n(.*)", mol, re.S).group(1).split()
+        self.assertAlmostEqual(float(masses[1]), 7850 * 4 / 3 * math.pi * 0.005 ** 3, delta=1e-15)
+        lig = read(os.path.join(folder, "templates.liggghts"))
+        m = re.search(r'variable bar_l1 string "nspheres (\d+) ntry 1000000 spheres ([^"]*)"', lig)
+        self.assertEqual(int(m.group(1)), len(rows))
+        values = [float(x) for x in m.group(2).split()]
+        for k, row in enumerate(rows):
+            self.assertLess(dist([values[4 * k + j] + centre[j] for j in range(3)], row[2:]), 1e-15)
+            self.assertEqual(values[4 * k + 3], 0.005)
+
+
+if __name__ == "__main__":
+    unittest.main()
