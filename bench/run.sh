@@ -3,8 +3,6 @@
 # one run, and writes docs/benchmarks.md with bench/report.py (bench/README.md:
 # the parts, the options, the raw results).
 #   bash bench/run.sh [--quick] [--repeats N]
-# The methods are the rows of bench/methods.tsv (report.py reads the same file);
-# the scenes, the packings grown and the series are the tables below.
 set -euo pipefail
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 quick=0 repeats=
@@ -17,8 +15,7 @@ while [ $# -gt 0 ]; do
   shift
 done
 die() { echo "bench: $*" >&2; exit 1; }
-# Inside ctest the build exists already: REINFORCE_BUILD names it.
-if [ -z "${REINFORCE_BUILD:-}" ]; then source "$top/scripts/setup.sh"; fi
+[ -n "${REINFORCE_BUILD:-}" ] || source "$top/scripts/setup.sh"    # inside ctest REINFORCE_BUILD names the build
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 lmp="$REINFORCE_BUILD/src/lammps/lmp_reinforce" liggghts="$REINFORCE_BUILD/src/liggghts/liggghts_reinforce"
 check="$REINFORCE_BUILD/tests/check_scene" quality="$REINFORCE_BUILD/tests/scene_quality"
@@ -37,31 +34,21 @@ mkdir -p "$out/scenes" "$out/runs" "$docs"
 # --- the tables ---------------------------------------------------------------------------
 # methods.tsv: key, method, param, fix keywords, plotted, where it runs (scenes,
 # liggghts, slab), description; RMAX, RBAR+RMAX, RBAR+RMIN are filled per scene.
+# scenes.tsv: the quick and the full run's scenes, in the order they run: every
+# method runs on a "methods" row's scene; the other rows are packings grown
+# around the bars (a reference: "around" by grow_packing, "lammps" by the beam's
+# own make_packing.lmp) or "alone" (the scene itself, the bars then added).
 mapfile -t methods < <(tail -n +2 "$top/bench/methods.tsv")
-# scenes: name, part, rmin, rmax, rebar radius, repeats (every method runs on each).
-# packings: scene, kind, seed, rmin, rmax, phi, part: grown around the bars (a
-# reference: "around" by grow_packing, "lammps" by the beam's own make_packing.lmp)
-# or "alone" (the scene itself, the bars then added).
+mapfile -t scenes < <(awk -F'\t' -v r="$([ "$quick" = 1 ] && echo quick || echo full)" '$1 == r' "$top/bench/scenes.tsv")
 if [ "$quick" = 1 ]; then
-  scenes=("small compare 0.005 0.0075 0.005 1" "narrow narrow 0.004 0.005 0.005 1")
-  packings=("narrow around 12 0.004 0.005 0.58 reference" "narrow alone 11 0.004 0.005 0.58 narrow")
   relax_scenes=(small) relax_chunks=2 relax_steps=20 liggghts_repeats=1 liggghts_methods=1
   speedups=("small 1") gap_scene=small gap_repeats=1 rbar_lx=0.125 rbar_cut=0.125 rbar_repeats=1
   # The quick case checks that every figure is produced, not its precision.
   export QUALITY_ARGS=${QUALITY_ARGS:---points 200000}
 else
-  scenes=("beam050 compare 0.0025 0.0075 0.005 3" "beam060 compare 0.0025 0.0075 0.005 3"
-          "beam064 compare 0.0025 0.0075 0.005 3" "narrow narrow 0.004 0.005 0.005 2"
-          "one more 0.004 0.004 0.005 2" "fibres more 0.0025 0.0075 0.001 2")
-  packings=("beam050 around 12 0.0025 0.0075 0.50 reference" "beam060 around 12 0.0025 0.0075 0.60 reference"
-            "narrow around 12 0.004 0.005 0.60 reference" "beam050 lammps 48271 0.0025 0.0075 0.50 reference"
-            "beam060 lammps 48271 0.0025 0.0075 0.60 reference" "beam064 lammps 48271 0.0025 0.0075 0.64 reference"
-            "narrow alone 11 0.004 0.005 0.60 narrow" "one around 12 0.004 0.004 0.56 more"
-            "one alone 11 0.004 0.004 0.56 more" "fibres alone 11 0.0025 0.0075 0.58 more")
   relax_scenes=(beam050 beam060 beam064) relax_chunks=10 relax_steps=500 liggghts_repeats=2 liggghts_methods=99
   speedups=("beam060 25") gap_scene=beam060 gap_repeats=3 rbar_lx=0.5 rbar_cut=0 rbar_repeats=3
 fi
-if [ -n "$repeats" ]; then for i in "${!scenes[@]}"; do scenes[$i]="${scenes[$i]% *} $repeats"; done; fi
 parts=(reference compare narrow more liggghts speedup gap rbar relax slab scaling)
 gaps=("1 0.0075" "10 0.075" "100 0.75" "1e20 1e20")    # search in rmax, and in metres
 rbars=(1 1e-2 1e-3 1e-4) nps=(1 2)
@@ -91,8 +78,7 @@ for t in "${!columns[@]}"; do tr ' ' '\t' <<<"${columns[$t]}" > "$out/$t.tsv"; d
 # row TABLE KEY=VALUE...: one row of TABLE.tsv in its header's order; a key the
 # header lacks is an error, a field not given is left empty.
 row() {
-  local table=$1 kv k line=()
-  shift
+  local table=$1 kv k line=() && shift
   local -A v=()
   for kv in "$@"; do
     k=${kv%%=*}
@@ -108,6 +94,7 @@ meta() { row meta key="$1" value="$2"; }
 parse() {
   local -n into=$1
   local w k=""
+  [ -n "$2" ] || return 1
   for w in ${2#* }; do
     if [[ $w == *=* ]]; then into[${w%%=*}]=${w#*=}
     elif [ -z "$k" ]; then k=$w
@@ -115,8 +102,7 @@ parse() {
   done
 }
 pick() {    # pick ARRAY KEY...: the words KEY=value of ARRAY, for row
-  local -n from=$1
-  shift
+  local -n from=$1 && shift
   for k in "$@"; do echo "$k=${from[$k]:-}"; done
 }
 # count_atoms DATAFILE [TYPE]: the atoms of a data file, or those of one type.
@@ -136,16 +122,13 @@ part() {    # part NAME: true when the part runs; records it and the load averag
 }
 
 # --- one run of one method ------------------------------------------------------------------
-# timed LOG NP PROGRAM ARGS...: one run under /usr/bin/time, in the inputs'
-# folder; sets wall and peak.
+# timed LOG COMMAND...: one run under /usr/bin/time in the inputs' folder; sets wall, peak.
 timed() {
-  local log=$1
-  shift
+  local log=$1 && shift
   (cd "$inputs" && /usr/bin/time -f "%e %M" -o "$log.time" "$@") || { tail -3 "$log" >&2; die "run failed, see $log"; }
   read -r wall peak < "$log.time"
 }
-# resolve ROW RMIN RMAX RBAR: sets method, param, keywords and plot of a
-# methods.tsv row for one scene.
+# resolve ROW RMIN RMAX RBAR: sets method, param, keywords, plot of a methods.tsv row for a scene.
 resolve() {
   IFS=$'\t' read -r _ method param keywords plot _ _ <<<"$1"
   param=${param/RMAX/$3} param=${param/RMIN/$2} keywords=${keywords/RMAX/$3}
@@ -165,17 +148,16 @@ run_method() {
     inputs="$top/examples/liggghts" timed "$run/log" "$liggghts" -in in.liggghts -var out "$run" -var tag bench \
       -var extra "$keywords" -log "$run/log" > "$run/screen"
     after=$run/liggghts_bench.data
-  elif [[ $method == delete_atoms* ]]; then
-    timed "$run/log" mpirun -np "$np" "$lmp" -log "$run/log" -screen none -in in.delete -var scene "$scene" \
-      -var out "$run" -var cutoff "$param"
-    R[seconds]=$(awk 'NR == 1 {a = $1} NR == 2 {printf "%.6f", $1 - a}' "$run/t0" "$run/t1")
-    R[overlap]=$("$check" --stats "$after" --rmin "$rmin" | awk '{print $6}')
   else
-    timed "$run/log" mpirun -np "$np" "$lmp" -log "$run/log" -screen none -in in.fix -var scene "$scene" \
-      -var out "$run" -var opts "$keywords"
+    local input=(in.fix -var opts "$keywords")
+    [[ $method != delete_atoms* ]] || input=(in.delete -var cutoff "$param")
+    timed "$run/log" mpirun -np "$np" "$lmp" -log "$run/log" -screen none -var scene "$scene" -var out "$run" -in "${input[@]}"
   fi
-  grep -q '^RESULT' "$run/log" || die "no RESULT line in $run/log"
-  parse R "$(grep '^RESULT' "$run/log" | tail -1)"
+  parse R "$(grep '^RESULT' "$run/log" | tail -1)" || die "no RESULT line in $run/log"
+  if [[ $method == delete_atoms* ]]; then    # the wall clock around the command; what it left
+    R[seconds]=$(calc "$(cat "$run/t1") - $(cat "$run/t0")" %.6f)
+    R[overlap]=$("$check" --stats "$after" --rmin "$rmin" | awk '{print $6}')
+  fi
   # The fix's schedule: its blocks with targets, the busiest process's targets, the balance.
   schedule=$(sed -n 's/^fix reinforce\/invert: schedule: .* in \([0-9]*\) blocks, busiest process \([0-9]*\) targets over the rounds, balance \([0-9.]*\) over .*/\1 \2 \3/p' "$run/log" | tail -1)
   [ -z "$schedule" ] || read -r R[blocks] R[busiest] R[balance] <<<"$schedule"
@@ -200,7 +182,7 @@ quality() {
     local -A Q=()
     text=$("$quality" "${args[@]}" $([ "$ref" = -=- ] || echo --reference "${ref#*=}") ${QUALITY_ARGS:-}) ||
       die "scene_quality failed on $after"
-    parse Q "$(grep '^QUALITY' <<<"$text")"
+    parse Q "$(grep '^QUALITY' <<<"$text")" || die "no QUALITY line from scene_quality on $after"
     if [ "${ref%%=*}" = make_packing.lmp ]; then
       row versus scene="$name" reference="${ref%%=*}" method="$method" param="$param" $(pick Q shell_ratio \
         shell_ratio_se ref_shell_ratio shell_vs_reference bin_diff_max bulk ref_bulk)
@@ -218,8 +200,8 @@ quality() {
 }
 
 # --- scenes and packings ------------------------------------------------------------------
-# cached FILE KEY COMMAND...: runs COMMAND (which writes FILE) unless FILE
-# exists with the same KEY; FILE.grow keeps "wall cpu date" and the KEY.
+# cached FILE KEY COMMAND...: runs COMMAND (it writes FILE) unless FILE exists with
+# the same KEY; FILE.grow keeps "wall cpu date" and the KEY.
 cached() {
   local file=$1 key=$2
   shift 2
@@ -228,6 +210,7 @@ cached() {
   /usr/bin/time -f "%e %U" -o "$file.time" "$@" > "$file.log" 2>&1 ||
     { tail -5 "$file.log" >&2; die "making $file failed, see $file.log"; }
   printf '%s %s\n%s\n' "$(cat "$file.time")" "$(date -u '+%Y-%m-%d_%H:%M_UTC')" "$key" > "$file.grow"
+  rm "$file.time"
 }
 # grown NAME KIND SEED RMIN RMAX PHI: a row of the packings table, grown when
 # not cached; one reference.tsv row; a reference's own quality.
@@ -286,11 +269,11 @@ scene_file() {
 bench_scene() {
   local name=$1 rmin=$2 rmax=$3 rbar=$4 reps=$5 where=$6 max=${7:-99} m n rep method param keywords plot before=-
   scene_file "$name"
-  if [ "$data" != - ] && [ "$where" != slab ]; then    # the scene before, as a text dump, for its quality
-    before="${data%.data}.before.dump"
-    [ -f "$before" ] || mpirun -np 1 "$lmp" -in "$inputs/in.dump" -var scene "$data" -var out "$before" -log none -screen none
+  if [ "$data" != - ]; then    # its size and box; the scene before, as a text dump, for its quality
+    echo "== $name ($(count_atoms "$data") atoms)" && meta "box_$name" "$(box_of "$data")" && before=${data%.data}.before.dump
+    [ "$where" = slab ] || [ -f "$before" ] || (cd "$inputs" && mpirun -np 1 "$lmp" -in in.dump -var scene "$data" \
+      -var out "$before" -log none -screen none) || die "writing $before failed"
   fi
-  [ "$data" = - ] || { echo "== $name ($(count_atoms "$data") atoms)"; meta "box_$name" "$(box_of "$data")"; }
   for rep in $(seq "$reps"); do
     n=0
     for m in "${methods[@]}"; do
@@ -302,17 +285,11 @@ bench_scene() {
     done
   done
 }
-# series NAME SCENE METHOD NP REP [PARAM KEYWORDS]...: one run of the fix per
-# PARAM KEYWORDS pair (default: its defaults), no quality.
+# series NAME SCENE METHOD NP REP [PARAM KEYWORDS]: one run of the fix (default:
+# its defaults) for a series, no quality.
 series() {
-  local name=$1 scene=$2 method=$3 np=$4 rep=$5
-  shift 5
-  [ $# -gt 0 ] || set -- 1000 ""
-  while [ $# -gt 0 ]; do
-    run_method "$name" "$scene" "$method" "$1" "$2" "$np" "$rep" 0.0025
-    rm -f "$run/after.dump"
-    shift 2
-  done
+  run_method "$1" "$2" "$3" "${6:-1000}" "${7:-}" "$4" "$5" 0.0025
+  rm -f "$run/after.dump"
 }
 # speedup NAME REPEATS: the fix's defaults on 1 and 2 processes, alternating.
 speedup() {
@@ -327,8 +304,7 @@ speedup() {
 relax() {
   local name=$1 rmin=$2 i t0 a mr mm first=
   scene_file "$name"
-  run="$out/runs/${name}_relax"
-  mkdir -p "$run"
+  run="$out/runs/${name}_relax" && mkdir -p "$run"
   timed "$run/log" mpirun -np 1 "$lmp" -log "$run/log" -screen none -in in.relax -var scene "$data" -var out "$run" \
     -var chunks "$relax_chunks" -var chunk "$relax_steps" -var rmin "$rmin"
   t0=$(cat "$run/relax_0.time")
@@ -342,15 +318,6 @@ relax() {
   row results scene="$name" atoms="$(count_atoms "$data")" method=relax param="$((relax_chunks * relax_steps)) steps" \
     np=1 rep=1 deleted=$((first - a)) overlap="$mr" op_seconds="$(tail -1 "$out/relax.tsv" | cut -f3)" \
     wall_seconds="$wall" peak_kb="$peak"
-}
-# rbar_scene F: one bar along x at mid-height in the 0.60 beam packing, its
-# rebar radius F times 5 mm; the spheres stay 7.66 mm apart (the 5 mm bar's
-# chain: thinner bars are beads on the same line), so only the radius changes.
-rbar_scene() {
-  data="$out/scenes/rbar_$1.data"
-  [ -f "$data" ] || BAR_RADIUS=$(calc "0.005 * $1") BAR_STEP=0.00766 \
-    bash "$top/bench/make_bars.sh" "$out/scenes/rbar_bars.data" "$rbar_lx" 0.25 0.25 line 1
-  prepared "$data" "$out/scenes/rbar_bars.data" -var matrix "$beam/matrix_phi060.data.gz" -var cut "$rbar_cut"
 }
 # scaling NAME LX LY BARS CUT REPLICATION: BARS bars along x in the 0.60 beam
 # packing cut at CUT (0: not) and replicated, the fix's defaults 3 times.
@@ -371,13 +338,11 @@ meta commit "$(git -C "$top" rev-parse --short HEAD 2>/dev/null || echo unknown)
 for p in "${parts[@]}"; do
   [ "$quick" = 1 ] && [[ " more slab scaling " == *" $p "* ]] && continue
   part "$p" || continue
-  for g in "${packings[@]}"; do
-    read -r name kind seed rmin rmax phi gpart <<<"$g"
-    [ "$gpart" != "$p" ] || grown "$name" "$kind" "$seed" "$rmin" "$rmax" "$phi"
-  done
   for s in "${scenes[@]}"; do
-    read -r name spart rmin rmax rbar reps <<<"$s"
-    [ "$spart" != "$p" ] || bench_scene "$name" "$rmin" "$rmax" "$rbar" "$reps" scenes
+    IFS=$'\t' read -r _ name spart kind rmin rmax rbar reps phi seed <<<"$s"
+    if [ "$spart" != "$p" ]; then continue
+    elif [ "$kind" = methods ]; then bench_scene "$name" "$rmin" "$rmax" "$rbar" "${repeats:-$reps}" scenes
+    else grown "$name" "$kind" "$seed" "$rmin" "$rmax" "$phi"; fi
   done
   case $p in
     liggghts)
@@ -393,16 +358,22 @@ for p in "${parts[@]}"; do
       for rep in $(seq "$gap_repeats"); do
         for g in "${gaps[@]}"; do series gap "$data" "fix search" 1 "$rep" "${g% *}" "search ${g#* }"; done
       done ;;
-    rbar)
+    rbar)    # one bar along x at mid-height in the 0.60 beam packing, its rebar radius F times 5 mm; its
+      # spheres stay 7.66 mm apart (the 5 mm bar's chain: thinner bars are beads on the same line)
       for rep in $(seq "$rbar_repeats"); do
         for f in "${rbars[@]}"; do
-          rbar_scene "$f"
+          data="$out/scenes/rbar_$f.data"
+          [ -f "$data" ] || BAR_RADIUS=$(calc "0.005 * $f") BAR_STEP=0.00766 \
+            bash "$top/bench/make_bars.sh" "$out/scenes/rbar_bars.data" "$rbar_lx" 0.25 0.25 line 1
+          prepared "$data" "$out/scenes/rbar_bars.data" -var matrix "$beam/matrix_phi060.data.gz" -var cut "$rbar_cut"
           REBAR=$(count_atoms "$data" 2) series rbar "$data" "fix rebar radius" 1 "$rep" "$f" ""
         done
       done ;;
     relax) for s in "${relax_scenes[@]}"; do relax "$s" 0.0025; done ;;
     scaling)    # one bar in growing scenes (the work fixed), then 1 to 16 bars in one scene (the work grows)
-      for r in "0.125 1 1 1" "0 1 1 1" "0 2 2 1" "0 4 2 2"; do scaling scaling_size 0.125 0.25 1 ${r% * * *} "${r#* }"; done
+      for r in "0.125 1 1 1" "0 1 1 1" "0 2 2 1" "0 4 2 2"; do
+        scaling scaling_size 0.125 0.25 1 ${r% * * *} "${r#* }"
+      done
       for n in 1 2 4 8 16; do scaling scaling_targets 1.0 1.0 "$n" 0 "2 4 1"; done ;;
   esac
 done
@@ -410,11 +381,11 @@ done
 # a row of results and of quality per method that runs on scenes, the
 # LIGGGHTS example its methods, every series point its row.
 on() { cut -f6 "$top/bench/methods.tsv" | grep -c "\b$1\b"; }    # on WHERE: how many methods run there
-lig=0
+n=$(printf '%s\n' "${scenes[@]}" | grep -c $'\tmethods\t') lig=0
 [ ! -x "$liggghts" ] || lig=$(($(on liggghts) < liggghts_methods ? $(on liggghts) : liggghts_methods))
-want="results $((${#scenes[@]} * $(on scenes) + lig + ${#relax_scenes[@]} + ${#nps[@]} + ${#gaps[@]} + ${#rbars[@]}))"
-[ "$quick" = 0 ] || meta want "$want quality $((${#scenes[@]} * $(on scenes) + lig)) reference ${#packings[@]} relax $((
-  ${#relax_scenes[@]} * (relax_chunks + 1)))"
+[ "$quick" = 0 ] || meta want "results $((n * $(on scenes) + lig + ${#relax_scenes[@]} + ${#nps[@]} + ${#gaps[@]} \
+  + ${#rbars[@]})) quality $((n * $(on scenes) + lig)) reference $((${#scenes[@]} - n)) relax $((${#relax_scenes[@]} \
+  * (relax_chunks + 1)))"
 meta load_end "$(cut -d' ' -f1-3 /proc/loadavg)"
 meta minutes "$(calc "($(date +%s) - $start_s) / 60" %.1f)"
 # README.md's figures from the same run: the repository's own when the page goes
