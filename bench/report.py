@@ -2,20 +2,21 @@
 """Writes docs/benchmarks.md, its plots (docs/img/) and README.md's figures from a bench/run.sh output folder.
 
 usage: report.py OUT_DIR DOCS_DIR [README]    write the page (and the figures between README's marks)
-       report.py --check OUT_DIR DOCS_DIR     check that a written page has every section and plot
+       report.py --check OUT_DIR DOCS_DIR     check that the run has every row its tables call for, and the
+                                              written page every section and plot
 
 Load and tables: bench/results.py (the method names from bench/methods.tsv, which run.sh reads too); sections,
 each one's prose beside the table it explains: here (the methods compared) and bench/report_cost.py (cost).
 """
+import html
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import plot  # noqa: E402  (bench/plot.py: gnuplot, the one plotting back end)
-import readme_figures  # noqa: E402
-from report_cost import figures, relaxation, rbar_and_gap, scaling, speedup  # noqa: E402
-from results import (ALL_PARTS, DEFAULTS, DELETE, GOAL_TIMES_FASTER, METHODS, REF_NAME,  # noqa: E402
-                     Run, compared_scenes, cpu_name, find, fmt, num, scene_groups, summary, table)
+import plot  # bench/plot.py: gnuplot, the one plotting back end
+import readme_figures
+from report_cost import figures, relaxation, rbar_and_gap, scaling, speedup
+from results import (DEFAULTS, DELETE, GOAL_TIMES_FASTER, METHODS, REF_NAME, Run, compared_scenes, cpu_name, find,
+                     fmt, num, scene_groups, summary, table)
 
 SECTIONS = ["Ratios (medians, 1 process)", "Scene quality", "Against a packing grown around the bars", "Profiles",
             "Parallel speedup", "Cost against rebar radius and search gap"]   # --check wants each
@@ -36,9 +37,9 @@ def introduction(run):
     if run.quick:
         md.append("This is the `--quick` run: one small scene, a small narrow-size scene with its reference and one "
                   "repeat; parts not in it: the beams, the slab and the scaling series.\n")
-    if [p for p in ALL_PARTS if p in run.skipped]:
+    if run.skipped:    # in the order run.sh runs its parts
         md.append("Parts of the run left out (`REINFORCE_BENCH_SKIP`), so their tables are missing: "
-                  + ", ".join(p for p in ALL_PARTS if p in run.skipped) + ".\n")
+                  + ", ".join(dict.fromkeys(run.skipped)) + ".\n")
     scenes, narrow = [], next((g for g in run.grown if g["scene"] == "narrow" and g["kind"] == "alone"), None)
     scenes.append("**small**: a jittered lattice of spheres of radii 5-7.5 mm (`build/tests/make_scene`) with one bar"
                   if run.quick else "the beam packings of `examples/beam/data` (solid fraction 0.50, 0.60, 0.64, "
@@ -328,7 +329,7 @@ def check(out_dir, docs):
     for sc in dict.fromkeys(p["scene"] for p in run.profiles):
         svg = open(os.path.join(docs, "img", f"profile_{sc}.svg")).read()
         missing += [f"line {label} of profile_{sc}.svg" for label, _ in profile_series(run, sc)
-                    if plot.quoted(label)[1:-1].replace("\\_", "_") not in svg]
+                    if html.escape(label, quote=False) not in svg]
     want = dict(zip(*[iter(run.meta.get("want", "").split())] * 2))   # the rows run.sh's tables call for
     have = {"results": run.rows, "quality": run.quality, "reference": run.grown, "relax": run.curves}
     missing += [f"rows of {k}.tsv: {len(have[k])} of {n}" for k, n in want.items() if len(have[k]) != int(n)]

@@ -12,7 +12,6 @@ import statistics
 PAPER = {"worst_deleted": "20%", "slab_hours": 12}
 GOAL_TIMES_FASTER = {"make_packing.lmp": 10.0, "grow_packing": 1.0}   # growth time / the fix's time, at least
 REF_NAME = {"around": "grow_packing", "lammps": "make_packing.lmp"}   # reference.tsv's kinds
-ALL_PARTS = ["reference", "compare", "narrow", "more", "liggghts", "speedup", "gap", "rbar", "relax", "slab", "scaling"]
 SERIES = ("speedup", "gap", "rbar", "scaling")    # scene names of the series (not compared scenes)
 METHODS = {m["key"]: m for m in csv.DictReader(open(os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                                                  "methods.tsv")), delimiter="\t")}
