@@ -102,8 +102,8 @@ parse() {
   done
 }
 pick() {    # pick ARRAY KEY...: the words KEY=value of ARRAY, for row
-  local -n from=$1 && shift
-  for k in "$@"; do echo "$k=${from[$k]:-}"; done
+  local key && local -n from=$1 && shift
+  for key in "$@"; do echo "$key=${from[$key]:-}"; done
 }
 # count_atoms DATAFILE [TYPE]: the atoms of a data file, or those of one type.
 count_atoms() {
