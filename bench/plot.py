@@ -51,7 +51,7 @@ def profile(path, title, series, x_label="distance from the nearest rebar surfac
     """Solid fraction against distance, one line with error bars per series."""
     data, plots = curves([(label, "using 1:2:3 with yerrorlines lw 2 pt 7 ps 0.5",
                            [(0.5 * (lo + hi), phi, se) for lo, hi, phi, se in rows]) for label, rows in series])
-    gnuplot(f"""set terminal svg size 760,470 font 'sans,12' background rgb 'white'
+    gnuplot(f"""set terminal svg size 960,470 font 'sans,12' background rgb 'white'
 set output {quoted(path, False)}
 {data}
 set title {quoted(title)}
@@ -59,7 +59,7 @@ set xlabel {quoted(x_label)}
 set ylabel {quoted(y_label)}
 set yrange [0:*]
 set grid ytics
-set key bottom right
+set key outside right top Left reverse samplen 2 width -6
 {COLOURS}
 plot {plots}
 """)
