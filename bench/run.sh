@@ -1,605 +1,399 @@
 #!/usr/bin/env bash
-# Benchmarks fix reinforce/invert against what a user has, on the same
-# scenes in one run, and writes docs/benchmarks.md (bench/report.py): every
-# sentence and number of that page comes from this run.
-#
-#   bash bench/run.sh            full run (about 30 minutes on 2 cores, plus
-#                                about 15 the first time: the make_packing.lmp
-#                                references, then cached in bench/out/scenes)
-#   bash bench/run.sh --quick    one small scene, one repeat, every method and
-#                                table; the page goes to a scratch folder
-#                                (run by the test suite so the harness cannot rot)
-#   REINFORCE_BENCH_SKIP="slab scaling"  leaves parts out (the page says so)
-#   REINFORCE_BENCH_OUT=DIR, REINFORCE_BENCH_DOCS=DIR  other folders for the raw
-#                                results (bench/out) and the page (docs)
-#
-# Methods, each timed around its own operation only (not LAMMPS start-up):
-#   fix       reinforce/invert: defaults (size keep, choose closest, tries
-#             1000, no pushing), size fit (the seed paper's mode), choose
-#             first, tries 15 (paper-era budget), push rmax (size keep with
-#             pushing), grow each (the regrowth's seeds one by one, in a
-#             zone of 3 rmax); time = the fix's own f_ID[9]
-#   delete    delete_atoms overlap with cutoff r_bar + rmax (removes every
-#             target and more) and r_bar + rmin (misses some); time = wall
-#             clock around the command (shell date in the input)
-#   relax     dynamic relaxation, bars frozen: largest overlap and atoms
-#             lost against elapsed time, a dump every chunk of steps
-#   grow      the reference a user would otherwise make: the same packing law
-#             grown around the bars from the start (build/tests/grow_packing
-#             --around-bars), its wall time and its own scene quality; for
-#             the beams also the beam's own law, the LAMMPS growth that
-#             made their packings (examples/beam/make_packing.lmp -var bars,
-#             minutes each the first time, then cached)
-# plus the whole process time and peak memory (/usr/bin/time), scene
-# quality (build/tests/scene_quality, before and after dumps, against the
-# grown reference where there is one), a narrow-size scene (radii 4-5 mm),
-# the LIGGGHTS example (liggghts_reinforce), the fix's time on 1 and 2
-# processes interleaved (speedup), and against rebar radius and search gap.
+# Benchmarks fix reinforce/invert against what a user has, on the same scenes in
+# one run, and writes docs/benchmarks.md with bench/report.py (bench/README.md:
+# the parts, the options, the raw results).
+#   bash bench/run.sh [--quick] [--repeats N]
 set -euo pipefail
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-quick=0 repeats=5
+quick=0 repeats=
 while [ $# -gt 0 ]; do
   case $1 in
-    --quick) quick=1 repeats=1 ;;
+    --quick) quick=1 ;;
     --repeats) repeats=$2; shift ;;
     *) echo "usage: bench/run.sh [--quick] [--repeats N]"; exit 2 ;;
   esac
   shift
 done
-# Inside ctest the build exists already: REINFORCE_BUILD names it.
-if [ -z "${REINFORCE_BUILD:-}" ]; then source "$top/scripts/setup.sh"; fi
+die() { echo "bench: $*" >&2; exit 1; }
+[ -n "${REINFORCE_BUILD:-}" ] || source "$top/scripts/setup.sh"    # inside ctest REINFORCE_BUILD names the build
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-if [ "$quick" = 0 ] && ! command -v gnuplot >/dev/null; then
-  sudo_cmd=""; [ "$(id -u)" -ne 0 ] && sudo_cmd="sudo"
-  $sudo_cmd apt-get install -y -q gnuplot-nox >/dev/null || echo "bench: no gnuplot, no plots" >&2
-fi
-lmp="$REINFORCE_BUILD/src/lammps/lmp_reinforce"
-check="$REINFORCE_BUILD/tests/check_scene"
-quality="$REINFORCE_BUILD/tests/scene_quality"
-make_scene="$REINFORCE_BUILD/tests/make_scene"
-grow="$REINFORCE_BUILD/tests/grow_packing"
-liggghts="$REINFORCE_BUILD/src/liggghts/liggghts_reinforce"
-inputs="$top/bench/lammps"
-out=${REINFORCE_BENCH_OUT:-$top/bench/out}
-docs=${REINFORCE_BENCH_DOCS:-$top/docs}    # the page and its plots (a trial run can write elsewhere)
-if [ "$quick" = 1 ] && [ -z "${REINFORCE_BENCH_OUT:-}" ]; then
-  out=$(mktemp -d "${TMPDIR:-/tmp}/bench_quick.XXXXXX")
-fi
+lmp="$REINFORCE_BUILD/src/lammps/lmp_reinforce" liggghts="$REINFORCE_BUILD/src/liggghts/liggghts_reinforce"
+check="$REINFORCE_BUILD/tests/check_scene" quality="$REINFORCE_BUILD/tests/scene_quality"
+grow="$REINFORCE_BUILD/tests/grow_packing" make_scene="$REINFORCE_BUILD/tests/make_scene"
+# Nothing is installed here: scripts/setup.sh installs the packages and builds.
+for need in "$lmp" "$check" "$quality" "$grow" "$make_scene" /usr/bin/python3 /usr/bin/time \
+            "$(command -v gnuplot || echo gnuplot)" "$(command -v mpirun || echo mpirun)"; do
+  [ -x "$need" ] || die "$need is missing: run scripts/setup.sh (it installs and builds what the benchmark needs)"
+done
+inputs="$top/bench/lammps" beam="$top/examples/beam/data"
+out=${REINFORCE_BENCH_OUT:-$top/bench/out} docs=${REINFORCE_BENCH_DOCS:-$top/docs}
+[ "$quick" = 1 ] && [ -z "${REINFORCE_BENCH_OUT:-}" ] && out=$(mktemp -d "${TMPDIR:-/tmp}/bench_quick.XXXXXX")
 [ "$quick" = 1 ] && docs="$out/docs"
 mkdir -p "$out/scenes" "$out/runs" "$docs"
-results="$out/results.tsv"
-curves="$out/relax.tsv"
-qual="$out/quality.tsv"
-meta="$out/meta.tsv"
-refs="$out/reference.tsv"
-versus="$out/versus.tsv"      # each method against a second reference (make_packing.lmp's)
-profiles="$out/profile.tsv"   # the fix's defaults: profile beside each reference's
-echo -e "scene\tatoms\tmethod\tparam\tnp\trep\ttargets\trelocated\tdeleted\tvolume_before\tvolume_after\toverlap\tsolves\top_seconds\twall_seconds\tpeak_kb\tremoved\trounds\trebar\tbalance\tbusiest\tblocks" > "$results"
-echo -e "scene\tchunk\tseconds\tatoms\tmatrix_rebar\tmatrix_matrix" > "$curves"
-echo -e "scene\tmethod\tparam\tshell_ratio\tshell_ratio_se\tremoved_ratio\tks\ttargets\tdeleted\tmoved_nontargets\tbulk\tref_bulk\tref_shell_ratio\tshell_vs_reference\tbin_diff_max" > "$qual"
-echo -e "scene\tkind\tseed\tmatrix\trebar\tbox\tphi\tradii\twall_seconds\tcpu_seconds\tgrown\tbulk\tshell_ratio\tshell_ratio_se" > "$refs"
-echo -e "scene\treference\tmethod\tparam\tshell_ratio\tshell_ratio_se\tref_shell_ratio\tshell_vs_reference\tbin_diff_max\tbulk\tref_bulk" > "$versus"
-echo -e "scene\treference\tmethod\tparam\tlo_rmax\thi_rmax\tphi\tphi_se\tref_phi\tref_phi_se" > "$profiles"
-echo -e "key\tvalue" > "$meta"
-meta() { echo -e "$1\t$2" >> "$meta"; }
-meta quick "$quick"
-meta repeats "$repeats"
-meta started "$(date -u '+%Y-%m-%d %H:%M UTC')"
-meta commit "$(git -C "$top" rev-parse --short HEAD 2>/dev/null || echo unknown)"
-start_s=$(date +%s)
-part() {    # part NAME: true when the part runs; records it, and the load average
-  local p=$1
-  if [[ " ${REINFORCE_BENCH_SKIP:-} " == *" $p "* ]]; then
-    meta "skipped" "$p"; echo "== $p: skipped (REINFORCE_BENCH_SKIP)"; return 1
-  fi
-  meta "load_$p" "$(cut -d' ' -f1-3 /proc/loadavg)"
-  echo "== $p ($(date -u +%H:%M:%S), load $(cut -d' ' -f1 /proc/loadavg))"
-  return 0
+
+# --- the tables ---------------------------------------------------------------------------
+# methods.tsv: key, method, param, fix keywords, plotted, where it runs (scenes,
+# liggghts, slab), description; RMAX, RBAR+RMAX, RBAR+RMIN are filled per scene.
+# scenes.tsv: the quick and the full run's scenes, in the order they run: every
+# method runs on a "methods" row's scene; the other rows are packings grown
+# around the bars (a reference: "around" by grow_packing, "lammps" by the beam's
+# own make_packing.lmp) or "alone" (the scene itself, the bars then added).
+mapfile -t methods < <(tail -n +2 "$top/bench/methods.tsv")
+mapfile -t scenes < <(awk -F'\t' -v r="$([ "$quick" = 1 ] && echo quick || echo full)" '$1 == r' "$top/bench/scenes.tsv")
+if [ "$quick" = 1 ]; then
+  relax_scenes=(small) relax_chunks=2 relax_steps=20 liggghts_repeats=1 liggghts_methods=1
+  speedups=("small 1") gap_scene=small gap_repeats=1 rbar_lx=0.125 rbar_cut=0.125 rbar_repeats=1
+  # The quick case checks that every figure is produced, not its precision.
+  export QUALITY_ARGS=${QUALITY_ARGS:---points 200000}
+else
+  relax_scenes=(beam050 beam060 beam064) relax_chunks=10 relax_steps=500 liggghts_repeats=2 liggghts_methods=99
+  speedups=("beam060 25") gap_scene=beam060 gap_repeats=3 rbar_lx=0.5 rbar_cut=0 rbar_repeats=3
+fi
+parts=(reference compare narrow more liggghts speedup gap rbar relax slab scaling)
+gaps=("1 0.0075" "10 0.075" "100 0.75" "1e20 1e20")    # search in rmax, and in metres
+rbars=(1 1e-2 1e-3 1e-4) nps=(1 2)
+declare -A grower=([around]=grow_packing [lammps]=make_packing.lmp)
+# geometry NAME: grow_packing's box and bars of a scene, one argument a line.
+geometry() {
+  case $quick$1 in
+    1narrow) printf '%s\n' --box 0 0.12 0 0.1 0 0.1 --bar 0.005 0.05 0.05 0.115 0.05 0.05 0.005 0.0075 ;;
+    0beam*|0narrow) printf '%s\n' --box 0 0.5 0 0.25 0 0.25    # the beam's five bars (examples/beam/make_bars.sh)
+      for yz in "0.04 0.04" "0.125 0.04" "0.21 0.04" "0.04 0.21" "0.21 0.21"; do
+        printf '%s\n' --bar 0.005 ${yz% *} ${yz#* } 0.495 ${yz% *} ${yz#* } 0.005 0.00766
+      done ;;
+    0one|0fibres) bash "$top/tests/quality/make_scenes.sh" --args "$1" ;;
+  esac
 }
 
-timed() {    # timed LOGFILE NP ARGS... : runs lmp_reinforce, prints "wall peak_kb"
-  local log=$1 np=$2
-  shift 2
-  (cd "$inputs" && /usr/bin/time -f "%e %M" -o "$log.time" mpirun -np "$np" "$lmp" -log "$log" \
-    -screen none "$@") || { echo "bench: run failed, see $log" >&2; tail -3 "$log" >&2; exit 1; }
-  cat "$log.time"
+# --- raw results: one header each, one row writer ------------------------------------------
+declare -A columns=(
+  [results]="scene atoms method param np rep targets relocated deleted volume_before volume_after overlap solves op_seconds wall_seconds peak_kb removed rounds rebar balance busiest blocks"
+  [relax]="scene chunk seconds atoms matrix_rebar matrix_matrix"
+  [quality]="scene method param shell_ratio shell_ratio_se removed_ratio ks targets deleted moved_nontargets bulk ref_bulk ref_shell_ratio shell_vs_reference bin_diff_max"
+  [reference]="scene kind seed matrix rebar box phi radii wall_seconds cpu_seconds grown bulk shell_ratio shell_ratio_se"
+  [versus]="scene reference method param shell_ratio shell_ratio_se ref_shell_ratio shell_vs_reference bin_diff_max bulk ref_bulk"
+  [profile]="scene reference method param lo_rmax hi_rmax phi phi_se ref_phi ref_phi_se"
+  [meta]="key value")
+for t in "${!columns[@]}"; do tr ' ' '\t' <<<"${columns[$t]}" > "$out/$t.tsv"; done
+# row TABLE KEY=VALUE...: one row of TABLE.tsv in its header's order; a key the
+# header lacks is an error, a field not given is left empty.
+row() {
+  local table=$1 kv k line=() && shift
+  local -A v=()
+  for kv in "$@"; do
+    k=${kv%%=*}
+    [[ " ${columns[$table]} " == *" $k "* ]] || die "row: $table has no field $k"
+    v[$k]=${kv#*=}
+  done
+  for k in ${columns[$table]}; do line+=("${v[$k]:-}"); done
+  (IFS=$'\t'; echo "${line[*]}") >> "$out/$table.tsv"
 }
-result_value() {    # result_value LOG KEY : a value from the RESULT line
-  grep '^RESULT' "$1" | tail -1 | tr ' ' '\n' | awk -v k="$2" 'prev == k {print; exit} {prev = $0}'
+meta() { row meta key="$1" value="$2"; }
+# parse ARRAY LINE: a RESULT line ("KEY VALUE" pairs, both hosts print it) or a
+# QUALITY line (KEY=VALUE words), its first word dropped, into ARRAY.
+parse() {
+  local -n into=$1
+  local w k=""
+  [ -n "$2" ] || return 1
+  for w in ${2#* }; do
+    if [[ $w == *=* ]]; then into[${w%%=*}]=${w#*=}
+    elif [ -z "$k" ]; then k=$w
+    else into[$k]=$w k=""; fi
+  done
+}
+pick() {    # pick ARRAY KEY...: the words KEY=value of ARRAY, for row
+  local key && local -n from=$1 && shift
+  for key in "$@"; do echo "$key=${from[$key]:-}"; done
+}
+# count_atoms DATAFILE [TYPE]: the atoms of a data file, or those of one type.
+count_atoms() {
+  awk -v t="${2:-}" 't == "" && / atoms$/ {print $1; exit}
+    /^Atoms/ {on = 1; next} /^[A-Z][a-z]+/ {on = 0}
+    on && NF >= 7 && $2 == t {n++} END {if (t != "") print n + 0}' "$1"
 }
 box_of() {    # box_of DATAFILE: "LX x LY x LZ"
   awk '/xlo xhi/ {x = $2 - $1} /ylo yhi/ {y = $2 - $1} /zlo zhi/ {z = $2 - $1; print x " x " y " x " z; exit}' "$1"
 }
-atoms_of() { awk '/ atoms$/ {print $1; exit}' "$1"; }
-rebar_of() {    # rebar spheres of a scene data file (type 2)
-  awk '/^Atoms/ {on = 1; next} /^(Velocities|Bonds)/ {on = 0} on && NF >= 7 && $2 == 2 {n++} END {print n + 0}' "$1"
-}
-before_dump() {    # before_dump SCENE: the scene as a text dump (once)
-  local d="${1%.data}.before.dump"
-  [ -f "$d" ] || (cd "$inputs" && mpirun -np 1 "$lmp" -in in.dump -var scene "$1" -var out "$d" -log none -screen none)
-  echo "$d"
+calc() { awk "BEGIN {printf \"${2:-%g}\\n\", $1}"; }    # calc EXPR [FORMAT]
+part() {    # part NAME: true when the part runs; records it and the load average
+  if [[ " ${REINFORCE_BENCH_SKIP:-} " == *" $1 "* ]]; then meta skipped "$1"; echo "== $1: skipped"; return 1; fi
+  meta "load_$1" "$(cut -d' ' -f1-3 /proc/loadavg)"
+  echo "== $1 ($(date -u +%H:%M:%S), load $(cut -d' ' -f1 /proc/loadavg))"
 }
 
-# run_fix NAME SCENE METHOD PARAM NP REP [lmp -var pairs...]: one fix run, one row.
-# Leaves the run folder's after.dump for the caller (quality), removes older ones.
-run_fix() {
-  local name=$1 scene=$2 method=$3 param=$4 np=$5 rep=$6
-  shift 6
-  local run="$out/runs/${name}_$(echo "$method $param" | tr -c 'A-Za-z0-9.\n-' '_')_np${np}_$rep"
+# --- one run of one method ------------------------------------------------------------------
+# timed LOG COMMAND...: one run under /usr/bin/time in the inputs' folder; sets wall, peak.
+timed() {
+  local log=$1 && shift
+  (cd "$inputs" && /usr/bin/time -f "%e %M" -o "$log.time" "$@") || { tail -3 "$log" >&2; die "run failed, see $log"; }
+  read -r wall peak < "$log.time"
+}
+# resolve ROW RMIN RMAX RBAR: sets method, param, keywords, plot of a methods.tsv row for a scene.
+resolve() {
+  IFS=$'\t' read -r _ method param keywords plot _ _ <<<"$1"
+  param=${param/RMAX/$3} param=${param/RMIN/$2} keywords=${keywords/RMAX/$3}
+  [[ $param == RBAR+* ]] && param=$(calc "$4 + ${param#RBAR+}")
+  [ "$keywords" != - ] || keywords=""
+}
+# run_method NAME SCENE METHOD PARAM KEYWORDS NP REP RMIN: one run, one row of
+# results.tsv: delete_atoms with cutoff PARAM, or the fix with KEYWORDS (on the
+# scene "liggghts", the LIGGGHTS example); sets run and after (the scene after).
+run_method() {
+  local name=$1 scene=$2 method=$3 param=$4 keywords=$5 np=$6 rep=$7 rmin=$8 schedule
+  run="$out/runs/${name}_$(tr -c 'A-Za-z0-9.\n-' _ <<<"$method $param")_np${np}_$rep" after=$run/after.dump
   mkdir -p "$run"
-  local wall peak
-  read -r wall peak < <(timed "$run/log" "$np" -in "$inputs/in.fix" -var scene "$scene" -var out "$run" "$@")
-  local v=()
-  for k in targets relocated deleted volume_before volume_after overlap solves seconds; do v+=("$(result_value "$run/log" $k)"); done
-  local IFS=$'\t'
-  # The schedule line: the busiest process's targets over the rounds, the
-  # balance between processes (1 = even) and the blocks with targets.
-  local sched
-  sched=$(sed -n 's/^fix reinforce\/invert: schedule: .* in \([0-9]*\) blocks, busiest process \([0-9]*\) targets over the rounds, balance \([0-9.]*\) over .*/\3\t\2\t\1/p' "$run/log" | tail -1)
-  [ -n "$sched" ] || sched=$'\t\t'
-  echo -e "$name\t$(atoms_of "$scene")\t$method\t$param\t$np\t$rep\t${v[*]}\t$wall\t$peak\t$(result_value "$run/log" removed)\t$(result_value "$run/log" rounds)\t${REBAR:-}\t$sched" >> "$results"
-  last_run=$run
+  local -A R=()
+  if [ "$name" = liggghts ]; then
+    # LIGGGHTS 3.8 crashes in insert/pack under -screen none: the screen goes to a file.
+    inputs="$top/examples/liggghts" timed "$run/log" "$liggghts" -in in.liggghts -var out "$run" -var tag bench \
+      -var extra "$keywords" -log "$run/log" > "$run/screen"
+    after=$run/liggghts_bench.data
+  else
+    local input=(in.fix -var opts "$keywords")
+    [[ $method != delete_atoms* ]] || input=(in.delete -var cutoff "$param")
+    timed "$run/log" mpirun -np "$np" "$lmp" -log "$run/log" -screen none -var scene "$scene" -var out "$run" -in "${input[@]}"
+  fi
+  parse R "$(grep '^RESULT' "$run/log" | tail -1)" || die "no RESULT line in $run/log"
+  if [[ $method == delete_atoms* ]]; then    # the wall clock around the command; what it left
+    R[seconds]=$(calc "$(cat "$run/t1") - $(cat "$run/t0")" %.6f)
+    R[overlap]=$("$check" --stats "$after" --rmin "$rmin" | awk '{print $6}')
+  fi
+  # The fix's schedule: its blocks with targets, the busiest process's targets, the balance.
+  schedule=$(sed -n 's/^fix reinforce\/invert: schedule: .* in \([0-9]*\) blocks, busiest process \([0-9]*\) targets over the rounds, balance \([0-9.]*\) over .*/\1 \2 \3/p' "$run/log" | tail -1)
+  [ -z "$schedule" ] || read -r R[blocks] R[busiest] R[balance] <<<"$schedule"
+  [ "$name" = liggghts ] && R[atoms]=$((R[atoms] + R[deleted])) || R[atoms]=$(count_atoms "$scene")
+  row results scene="$name" method="$method" param="$param" np="$np" rep="$rep" op_seconds="${R[seconds]}" \
+    wall_seconds="$wall" peak_kb="$peak" rebar="${REBAR:-}" $(pick R atoms targets relocated deleted volume_before \
+    volume_after overlap solves removed rounds balance busiest blocks)
 }
-# run_delete NAME SCENE CUTOFF NP REP RMIN
-run_delete() {
-  local name=$1 scene=$2 cut=$3 np=$4 rep=$5 rmin=$6
-  local run="$out/runs/${name}_delete_${cut}_np${np}_$rep" wall peak seconds overlap
-  mkdir -p "$run"
-  read -r wall peak < <(timed "$run/log" "$np" -in "$inputs/in.delete" -var scene "$scene" \
-    -var out "$run" -var cutoff "$cut")
-  seconds=$(awk 'NR == 1 {a = $1} NR == 2 {printf "%.6f", $1 - a}' "$run/t0" "$run/t1")
-  overlap=$("$check" --stats "$run/after.dump" --rmin "$rmin" | awk '{print $6}')
-  echo -e "$name\t$(atoms_of "$scene")\tdelete_atoms overlap\t$cut\t$np\t$rep\t\t\t$(result_value "$run/log" deleted)\t\t\t$overlap\t\t$seconds\t$wall\t$peak\t\t\t" >> "$results"
-  last_run=$run
-}
-# quality_of NAME SCENE METHOD PARAM RMIN RMAX [AFTER]: scene_quality of the
-# last run's after.dump (or AFTER; no before then when SCENE is "-"),
-# against the grown reference ${refs_of[NAME]} when there is one, and
-# again against ${lammps_refs_of[NAME]} (make_packing.lmp's) when there is
-# one (a row of versus.tsv). For the fix's defaults the profiles beside each
-# reference go to profile.tsv.
-declare -A refs_of=() lammps_refs_of=()
-# The methods whose profiles (solid fraction against distance from the bars)
-# go to profile.tsv, for the report's plots.
-profiled="|fix defaults|fix size fit (seed paper)|fix grow each|delete_atoms overlap|"
-quality_value() {    # quality_value LINE KEY: a value from a QUALITY line
-  tr ' ' '\n' <<<"$1" | awk -F= -v k="$2" '$1 == k {print $2}'
-}
-profile_rows() {    # profile_rows NAME REFERENCE METHOD PARAM < scene_quality output (REFERENCE "-": none)
-  awk -v p="$1"$'\t'"$2"$'\t'"$3"$'\t'"$4" '
-    /^ *\[ *[0-9.e+-]+, *[0-9.e+-]+\) rmax / {
-      line = $0; gsub(/[\[\),]/, " ", line); n = split(line, f, " ")
-      ref = ""; for (i = 1; i <= n; i++) if (f[i] == "ref") ref = f[i + 1] "\t" f[i + 3]
-      if (ref == "") ref = "\t"
-      print p "\t" f[1] "\t" f[2] "\t" f[4] "\t" f[6] "\t" ref
-    }' >> "$profiles"
-}
-quality_of() {
-  local name=$1 scene=$2 method=$3 param=$4 rmin=$5 rmax=$6 after=${7:-$last_run/after.dump} line out2
-  local quiet=(--quiet-profile)
-  [[ "$profiled" == *"|$method|"* ]] && quiet=()
-  local args=(--after "$after" --rmin "$rmin" --rmax "$rmax" "${quiet[@]}")
-  [ "$scene" != - ] && args+=(--before "$(before_dump "$scene")")
-  [ -n "${refs_of[$name]:-}" ] && args+=(--reference "${refs_of[$name]}")
-  out2=$("$quality" "${args[@]}" ${QUALITY_ARGS:-}) || { echo "bench: scene_quality failed" >&2; exit 1; }
-  line=$(grep '^QUALITY' <<<"$out2") || { echo "bench: scene_quality failed" >&2; exit 1; }
-  if [ -z "${quiet[*]}" ]; then
-    if [ -n "${refs_of[$name]:-}" ]; then
-      profile_rows "$name" grow_packing "$method" "$param" <<<"$out2"
+# quality NAME BEFORE AFTER METHOD PARAM RMIN RMAX PLOT: scene_quality of AFTER
+# (BEFORE "-": none), once against each reference of the scene in turn
+# (grow_packing's, or none, gives the quality.tsv row; make_packing.lmp's a
+# versus.tsv row: scene_quality takes one reference); a plotted method's
+# profile bins go to profile.tsv.
+declare -A refs_of=()    # refs_of[SCENE]: "grower=file" words
+quality() {
+  local name=$1 before=$2 after=$3 method=$4 param=$5 rmin=$6 rmax=$7 plot=$8 ref text refs=${refs_of[$1]:-}
+  local args=(--after "$after" --rmin "$rmin" --rmax "$rmax")
+  [ "$plot" = yes ] || args+=(--quiet-profile)
+  [ "$before" = - ] || args+=(--before "$before")
+  [[ $refs == *grow_packing=* ]] || refs="-=- $refs"
+  for ref in $refs; do
+    local -A Q=()
+    text=$("$quality" "${args[@]}" $([ "$ref" = -=- ] || echo --reference "${ref#*=}") ${QUALITY_ARGS:-}) ||
+      die "scene_quality failed on $after"
+    parse Q "$(grep '^QUALITY' <<<"$text")" || die "no QUALITY line from scene_quality on $after"
+    if [ "${ref%%=*}" = make_packing.lmp ]; then
+      row versus scene="$name" reference="${ref%%=*}" method="$method" param="$param" $(pick Q shell_ratio \
+        shell_ratio_se ref_shell_ratio shell_vs_reference bin_diff_max bulk ref_bulk)
     else
-      profile_rows "$name" - "$method" "$param" <<<"$out2"
+      row quality scene="$name" method="$method" param="$param" $(pick Q shell_ratio shell_ratio_se removed_ratio ks \
+        targets deleted moved_nontargets bulk ref_bulk ref_shell_ratio shell_vs_reference bin_diff_max)
     fi
-  fi
-  local q=()
-  for k in shell_ratio shell_ratio_se removed_ratio ks targets deleted moved_nontargets bulk ref_bulk \
-           ref_shell_ratio shell_vs_reference bin_diff_max; do
-    q+=("$(quality_value "$line" "$k")")
+    [ "$plot" = yes ] || continue
+    awk -v OFS='\t' -v p="$name"$'\t'"${ref%%=*}"$'\t'"$method"$'\t'"$param" '
+      /^ *\[ *[0-9.e+-]+, *[0-9.e+-]+\) rmax / {
+        gsub(/[\[\),]/, " "); r1 = r2 = ""
+        for (i = 1; i <= NF; i++) if ($i == "ref") { r1 = $(i + 1); r2 = $(i + 3) }
+        print p, $1, $2, $4, $6, r1, r2 }' <<<"$text" >> "$out/profile.tsv"
   done
-  local IFS=$'\t'
-  echo -e "$name\t$method\t$param\t${q[*]}" >> "$qual"
-  if [ -n "${lammps_refs_of[$name]:-}" ]; then
-    out2=$("$quality" --after "$after" --rmin "$rmin" --rmax "$rmax" --reference "${lammps_refs_of[$name]}" \
-      "${quiet[@]}") || { echo "bench: scene_quality failed against ${lammps_refs_of[$name]}" >&2; exit 1; }
-    line=$(grep '^QUALITY' <<<"$out2") || { echo "bench: scene_quality failed" >&2; exit 1; }
-    [ -z "${quiet[*]}" ] && profile_rows "$name" make_packing.lmp "$method" "$param" <<<"$out2"
-    q=()
-    for k in shell_ratio shell_ratio_se ref_shell_ratio shell_vs_reference bin_diff_max bulk ref_bulk; do
-      q+=("$(quality_value "$line" "$k")")
-    done
-    echo -e "$name\tmake_packing.lmp\t$method\t$param\t${q[*]}" >> "$versus"
-  fi
-}
-# grow_scene NAME KIND OUT SEED RMIN RMAX PHI GROW_ARGS...: a packing by
-# grow_packing (KIND "alone": the matrix, then the bars added, the fix's
-# input; "around": grown around the bars, the reference), cached in
-# scenes/ with its growth time (OUT.grow: wall and CPU seconds, date, then
-# the arguments: other arguments grow it again), one row of reference.tsv,
-# and for "around" its own scene quality.
-grow_scene() {
-  local name=$1 kind=$2 file=$3 seed=$4 rmin=$5 rmax=$6 phi=$7 line
-  shift 7
-  local extra=()
-  [ "$kind" = around ] && extra=(--around-bars)
-  local args=(--radius "$rmin" "$rmax" --phi "$phi" --seed "$seed" "$@" "${extra[@]}")
-  if [ ! -f "$file" ] || [ ! -f "$file.grow" ] || [ "$(sed -n 2p "$file.grow")" != "${args[*]}" ]; then
-    rm -f "$file" "${file%.data}.before.dump"
-    /usr/bin/time -f "%e %U" -o "$file.time" "$grow" "$file" "${args[@]}" --max-seconds 600 > "$file.log" ||
-      { echo "bench: grow_packing failed, see $file.log" >&2; cat "$file.log" >&2; exit 1; }
-    printf '%s %s\n%s\n' "$(cat "$file.time")" "$(date -u '+%Y-%m-%d_%H:%M_UTC')" "${args[*]}" > "$file.grow"
-    rm -f "$file.time"
-  fi
-  local wall cpu when matrix rebar box q=("" "" "")
-  read -r wall cpu when < <(head -1 "$file.grow")
-  matrix=$(awk '/^Atoms/ {on = 1; next} on && NF >= 7 && $2 == 1 {n++} END {print n + 0}' "$file")
-  rebar=$(rebar_of "$file")
-  box=$(box_of "$file")
-  if [ "$kind" = around ]; then
-    line=$("$quality" --after "$file" --rmin "$rmin" --rmax "$rmax" --quiet-profile | grep '^QUALITY') ||
-      { echo "bench: scene_quality failed on $file" >&2; exit 1; }
-    q=()
-    for k in bulk shell_ratio shell_ratio_se; do
-      q+=("$(tr ' ' '\n' <<<"$line" | awk -F= -v k="$k" '$1 == k {print $2}')")
-    done
-    refs_of[$name]=$file
-  fi
-  echo -e "$name\t$kind\t$seed\t$matrix\t$rebar\t$box\t$phi\t$rmin-$rmax\t$wall\t$cpu\t$when\t${q[0]}\t${q[1]}\t${q[2]}" >> "$refs"
 }
 
-# lammps_ref NAME OUT PHI SEED BARS RMIN RMAX: the reference grown by the
-# beam's own packing law, examples/beam/make_packing.lmp with the bars
-# present (frozen) from the start, as a LAMMPS user would run it (Debian's
-# lmp, one process, several minutes). Cached in scenes/ like grow_scene:
-# OUT.grow holds the wall and CPU seconds and the date, then the key (the
-# arguments and checksums of the script and the bars file: another key
-# grows it again), OUT.packing its PACKING line. One row of reference.tsv
-# (kind "lammps"), its PACKING line in meta.tsv (packing_NAME), and its own
-# scene quality; quality_of then measures every method against it too.
-lammps_ref() {
-  local name=$1 file=$2 phi=$3 seed=$4 bars=$5 rmin=$6 rmax=$7 line
-  local script="$top/examples/beam/make_packing.lmp" plain_lmp
-  plain_lmp=$(command -v lmp || echo "$lmp")
-  local key="make_packing.lmp -var phi $phi -var seed $seed -var bars $(basename "$bars") script $(sha1sum < "$script" | cut -c1-12) bars $(sha1sum < "$bars" | cut -c1-12)"
-  if [ ! -f "$file" ] || [ ! -f "$file.grow" ] || [ ! -f "$file.packing" ] || [ "$(sed -n 2p "$file.grow")" != "$key" ]; then
-    rm -f "$file" "$file.packing"
-    echo "== $name: growing with make_packing.lmp (several minutes)"
-    (cd "$top/examples/beam" && /usr/bin/time -f "%e %U" -o "$file.time" "$plain_lmp" -in make_packing.lmp \
-      -var phi "$phi" -var seed "$seed" -var bars "$bars" -var out "$file" -log "$file.log" -screen none) &&
-      grep '^PACKING' "$file.log" | tail -1 | sed 's/^PACKING //' > "$file.packing" && [ -s "$file.packing" ] ||
-      { echo "bench: make_packing.lmp failed, see $file.log" >&2; tail -3 "$file.log" >&2; rm -f "$file"; exit 1; }
-    printf '%s %s\n%s\n' "$(cat "$file.time")" "$(date -u '+%Y-%m-%d_%H:%M_UTC')" "$key" > "$file.grow"
-    rm -f "$file.time"
+# --- scenes and packings ------------------------------------------------------------------
+# cached FILE KEY COMMAND...: runs COMMAND (it writes FILE) unless FILE exists with
+# the same KEY; FILE.grow keeps "wall cpu date" and the KEY.
+cached() {
+  local file=$1 key=$2
+  shift 2
+  [ -f "$file" ] && [ -f "$file.grow" ] && [ "$(sed -n 2p "$file.grow")" = "$key" ] && return 0
+  rm -f "$file" "${file%.data}.before.dump"
+  /usr/bin/time -f "%e %U" -o "$file.time" "$@" > "$file.log" 2>&1 ||
+    { tail -5 "$file.log" >&2; die "making $file failed, see $file.log"; }
+  printf '%s %s\n%s\n' "$(cat "$file.time")" "$(date -u '+%Y-%m-%d_%H:%M_UTC')" "$key" > "$file.grow"
+  rm "$file.time"
+}
+# grown NAME KIND SEED RMIN RMAX PHI: a row of the packings table, grown when
+# not cached; one reference.tsv row; a reference's own quality.
+grown() {
+  local name=$1 kind=$2 seed=$3 rmin=$4 rmax=$5 phi=$6 file wall cpu when
+  local -A Q=()
+  file="$out/scenes/${name}_${kind}_ref.data"
+  if [ "$kind" = lammps ]; then
+    # Debian's lmp, one process, as a LAMMPS user would run it: several minutes.
+    local script="$top/examples/beam/make_packing.lmp" plain_lmp
+    plain_lmp=$(command -v lmp || echo "$lmp")
+    echo "== $name: make_packing.lmp (several minutes when not cached)"
+    cached "$file" "make_packing.lmp -var phi $phi -var seed $seed -var bars bars.data script $(sha1sum < "$script" |
+      cut -c1-12) bars $(sha1sum < "$beam/bars.data" | cut -c1-12)" bash -c 'cd "$1" && "$2" -in make_packing.lmp \
+      -var phi "$3" -var seed "$4" -var bars "$5" -var out "$6" -log "$6.lmplog" -screen none' - "$top/examples/beam" \
+      "$plain_lmp" "$phi" "$seed" "$beam/bars.data" "$file"
+    meta "packing_$name" "$(grep '^PACKING' "$file.lmplog" | tail -1 | sed 's/^PACKING //')"
+  else
+    local args=(--radius "$rmin" "$rmax" --phi "$phi" --seed "$seed")
+    mapfile -t -O ${#args[@]} args < <(geometry "$name")
+    [ "$kind" = alone ] && file="$out/scenes/$name.data" || args+=(--around-bars)
+    cached "$file" "${args[*]}" "$grow" "$file" "${args[@]}" --max-seconds 600
   fi
-  local wall cpu when matrix rebar box q=()
-  read -r wall cpu when < <(head -1 "$file.grow")
-  matrix=$(awk '/^Atoms/ {on = 1; next} /^Velocities/ {on = 0} on && NF >= 7 && $2 == 1 {n++} END {print n + 0}' "$file")
-  rebar=$(rebar_of "$file")
-  box=$(box_of "$file")
-  line=$("$quality" --after "$file" --rmin "$rmin" --rmax "$rmax" --quiet-profile | grep '^QUALITY') ||
-    { echo "bench: scene_quality failed on $file" >&2; exit 1; }
-  for k in bulk shell_ratio shell_ratio_se; do q+=("$(quality_value "$line" "$k")"); done
-  lammps_refs_of[$name]=$file
-  meta "packing_$name" "$(cat "$file.packing")"
-  echo -e "$name\tlammps\t$seed\t$matrix\t$rebar\t$box\t$phi\t$rmin-$rmax\t$wall\t$cpu\t$when\t${q[0]}\t${q[1]}\t${q[2]}" >> "$refs"
+  if [ "$kind" != alone ]; then
+    parse Q "$("$quality" --after "$file" --rmin "$rmin" --rmax "$rmax" --quiet-profile | grep '^QUALITY')"
+    refs_of[$name]="${refs_of[$name]:-} ${grower[$kind]}=$file"
+  fi
+  read -r wall cpu when < "$file.grow"
+  row reference scene="$name" kind="$kind" seed="$seed" matrix="$(count_atoms "$file" 1)" \
+    rebar="$(count_atoms "$file" 2)" box="$(box_of "$file")" phi="$phi" radii="$rmin-$rmax" wall_seconds="$wall" \
+    cpu_seconds="$cpu" grown="$when" $(pick Q bulk shell_ratio shell_ratio_se)
+}
+# prepared FILE BARS [in.prepare -var pairs]: a beam packing plus bars, once.
+prepared() {
+  [ -f "$1" ] || mpirun -np 1 "$lmp" -in "$inputs/in.prepare" -var bars "$2" -var out "$1" -log none -screen none "${@:3}"
+}
+# scene_file NAME: sets data to the scene's data file, made when missing
+# (those grown alone come from the packings table).
+scene_file() {
+  data="$out/scenes/$1.data"
+  case $1 in
+    liggghts) data=- ;;    # the example makes its own
+    small) [ -f "$data" ] || "$make_scene" "$data" --fcc --box 0 0.2 0 0.1 0 0.1 --radius 0.005 0.0075 \
+             --bar 0.01 0.05 0.05 0.19 0.05 0.05 0.005 0.0077 > /dev/null ;;
+    beam*) prepared "$data" "$beam/bars.data" -var matrix "$beam/matrix_phi${1#beam}.data.gz" ;;
+    slab) # the 0.60 beam replicated 2 x 5 x 2 (1.0 x 1.25 x 0.5 m), a mesh of bars 0.1 m apart in two layers
+      [ -f "$data" ] || bash "$top/bench/make_bars.sh" "$out/scenes/mesh.data" 1.0 1.25 0.5 mesh 0.1 0.04
+      prepared "$data" "$out/scenes/mesh.data" -var matrix "$beam/matrix_phi060.data.gz" -var rep "2 5 2" ;;
+  esac
 }
 
-# bench_scene NAME DATAFILE RMIN RMAX RBAR REPEATS: every method, 1 process,
-# repeats interleaved; scene quality of the first repeat of each.
+# --- the parts ----------------------------------------------------------------------------------
+# bench_scene NAME RMIN RMAX RBAR REPEATS WHERE [MAX]: the methods of the table
+# that run on WHERE (at most MAX of them), 1 process, interleaved in each
+# repeat; the quality of the first repeat of each (not on the slab).
 bench_scene() {
-  local name=$1 data=$2 rmin=$3 rmax=$4 rbar=$5 reps=$6 rep cut
-  echo "== $name ($(atoms_of "$data") atoms)"
-  meta "box_$name" "$(box_of "$data")"
+  local name=$1 rmin=$2 rmax=$3 rbar=$4 reps=$5 where=$6 max=${7:-99} m n rep method param keywords plot before=-
+  scene_file "$name"
+  if [ "$data" != - ]; then    # its size and box; the scene before, as a text dump, for its quality
+    echo "== $name ($(count_atoms "$data") atoms)" && meta "box_$name" "$(box_of "$data")" && before=${data%.data}.before.dump
+    [ "$where" = slab ] || [ -f "$before" ] || (cd "$inputs" && mpirun -np 1 "$lmp" -in in.dump -var scene "$data" \
+      -var out "$before" -log none -screen none) || die "writing $before failed"
+  fi
   for rep in $(seq "$reps"); do
-    run_fix "$name" "$data" "fix defaults" 1000 1 "$rep"
-    [ "$rep" = 1 ] && quality_of "$name" "$data" "fix defaults" 1000 "$rmin" "$rmax"
-    rm -f "$last_run/after.dump"
-    run_fix "$name" "$data" "$size_fit" 1000 1 "$rep" -var opts "size fit"
-    [ "$rep" = 1 ] && quality_of "$name" "$data" "$size_fit" 1000 "$rmin" "$rmax"
-    rm -f "$last_run/after.dump"
-    run_fix "$name" "$data" "fix choose first" 1000 1 "$rep" -var choose first
-    [ "$rep" = 1 ] && quality_of "$name" "$data" "fix choose first" 1000 "$rmin" "$rmax"
-    rm -f "$last_run/after.dump"
-    run_fix "$name" "$data" "fix tries 15" 15 1 "$rep" -var tries 15
-    [ "$rep" = 1 ] && quality_of "$name" "$data" "fix tries 15" 15 "$rmin" "$rmax"
-    rm -f "$last_run/after.dump"
-    run_fix "$name" "$data" "fix push rmax" 1000 1 "$rep" -var opts "push $rmax"
-    [ "$rep" = 1 ] && quality_of "$name" "$data" "fix push rmax" 1000 "$rmin" "$rmax"
-    rm -f "$last_run/after.dump"
-    run_fix "$name" "$data" "fix grow each" 1000 1 "$rep" -var opts "grow each"
-    [ "$rep" = 1 ] && quality_of "$name" "$data" "fix grow each" 1000 "$rmin" "$rmax"
-    rm -f "$last_run/after.dump"
-    for cut in "$(awk -v a="$rbar" -v b="$rmax" 'BEGIN {print a + b}')" \
-               "$(awk -v a="$rbar" -v b="$rmin" 'BEGIN {print a + b}')"; do
-      run_delete "$name" "$data" "$cut" 1 "$rep" "$rmin"
-      [ "$rep" = 1 ] && quality_of "$name" "$data" "delete_atoms overlap" "$cut" "$rmin" "$rmax"
-      rm -f "$last_run/after.dump"
+    n=0
+    for m in "${methods[@]}"; do
+      [[ ,$(cut -f6 <<<"$m"), == *,$where,* ]] && [ $((n += 1)) -le "$max" ] || continue
+      resolve "$m" "$rmin" "$rmax" "$rbar"
+      run_method "$name" "$data" "$method" "$param" "$keywords" 1 "$rep" "$rmin"
+      [ "$rep" = 1 ] && [ "$where" != slab ] && quality "$name" "$before" "$after" "$method" "$param" "$rmin" "$rmax" "$plot"
+      rm -f "$run/after.dump"
     done
   done
 }
-# run_liggghts METHOD REP [KEYWORDS]: the LIGGGHTS example
-# (examples/liggghts/in.liggghts: insert/pack, settling, two bars, the fix),
-# one row from the fix's log line, scene quality of the data file it writes
-# (no before: it writes none).
-run_liggghts() {
-  local method=$1 rep=$2 extra=${3:-}
-  local run="$out/runs/liggghts_$(echo "$method" | tr -c 'A-Za-z0-9.\n-' '_')_$rep" wall peak line
-  mkdir -p "$run"
-  # LIGGGHTS 3.8 crashes in insert/pack under -screen none: the screen goes to a file.
-  (cd "$top/examples/liggghts" && /usr/bin/time -f "%e %M" -o "$run/log.time" "$liggghts" -in in.liggghts \
-    -var out "$run" -var tag bench -var extra "$extra" -log "$run/log" > "$run/screen") ||
-    { echo "bench: liggghts run failed, see $run/log" >&2; tail -3 "$run/log" >&2; exit 1; }
-  read -r wall peak < "$run/log.time"
-  line=$(grep '^fix reinforce/invert: [0-9]' "$run/log" | tail -1)
-  # "T targets, R relocated, D deleted (...), K kept, volume A -> B, max overlap O rmin,
-  #  S solves, ..., N rounds, X s (rmin ...)"
-  awk -v scene=liggghts -v method="$method" -v rep="$rep" -v wall="$wall" -v peak="$peak" \
-      -v after="$(awk '/ atoms$/ {print $1; exit}' "$run/liggghts_bench.data")" '{
-    sub(/^fix reinforce\/invert: /, "")
-    for (i = 1; i <= NF; i++) {
-      if ($(i + 1) ~ /^targets/) t = $i
-      if ($(i + 1) ~ /^relocated/) r = $i
-      if ($(i + 1) == "deleted") d = $i
-      if ($i == "volume") { vb = $(i + 1); va = $(i + 3); sub(/,$/, "", va) }
-      if ($i == "overlap") o = $(i + 1)
-      if ($(i + 1) ~ /^solves/) s = $i
-      if ($(i + 1) ~ /^rounds/) n = $i
-      if ($(i + 1) == "s") x = $i
-    }
-    printf "%s\t%s\t%s\t1000\t1\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t\t%s\t\n", scene, after + d, method, rep,
-      t, r, d, vb, va, o, s, x, wall, peak, n
-  }' <<<"$line" >> "$results"
-  last_run=$run
+# series NAME SCENE METHOD NP REP [PARAM KEYWORDS]: one run of the fix (default:
+# its defaults) for a series, no quality.
+series() {
+  run_method "$1" "$2" "$3" "${6:-1000}" "${7:-}" "$4" "$5" 0.0025
+  rm -f "$run/after.dump"
 }
-# relax NAME DATAFILE RMIN CHUNKS STEPS: dynamic relaxation, once, serially.
+# speedup NAME REPEATS: the fix's defaults on 1 and 2 processes, alternating.
+speedup() {
+  local rep np
+  scene_file "$1"
+  for rep in $(seq "$2"); do
+    for np in "${nps[@]}"; do series "speedup_$1" "$data" "fix defaults" "$np" "$rep"; done
+  done
+}
+# relax NAME RMIN: dynamic relaxation, once, serially: the largest overlaps
+# after every chunk of steps (relax.tsv), and one results.tsv row.
 relax() {
-  local name=$1 data=$2 rmin=$3 chunks=$4 steps=$5 run="$out/runs/${1}_relax" wall peak t0 i
-  mkdir -p "$run"
-  read -r wall peak < <(timed "$run/log" 1 -in "$inputs/in.relax" -var scene "$data" -var out "$run" \
-    -var chunks "$chunks" -var chunk "$steps" -var rmin "$rmin")
+  local name=$1 rmin=$2 i t0 a mr mm first=
+  scene_file "$name"
+  run="$out/runs/${name}_relax" && mkdir -p "$run"
+  timed "$run/log" mpirun -np 1 "$lmp" -log "$run/log" -screen none -in in.relax -var scene "$data" -var out "$run" \
+    -var chunks "$relax_chunks" -var chunk "$relax_steps" -var rmin "$rmin"
   t0=$(cat "$run/relax_0.time")
-  for i in $(seq 0 "$chunks"); do
+  for i in $(seq 0 "$relax_chunks"); do
     read -r _ a _ _ _ mr _ mm < <("$check" --stats "$run/relax_$i.dump" --rmin "$rmin")
-    echo -e "$name\t$i\t$(awk -v a="$t0" -v b="$(cat "$run/relax_$i.time")" 'BEGIN {printf "%.4f", b - a}')\t$a\t$mr\t$mm" >> "$curves"
+    row relax scene="$name" chunk="$i" seconds="$(calc "$(cat "$run/relax_$i.time") - $t0" %.4f)" \
+      atoms="$a" matrix_rebar="$mr" matrix_matrix="$mm"
+    first=${first:-$a}
     rm -f "$run/relax_$i.dump"
   done
-  awk -F'\t' -v n="$name" -v steps="$((chunks * steps))" -v w="$wall" -v p="$peak" -v atoms="$(atoms_of "$data")" '
-    $1 == n { if (first == "") first = $4; last = $4; t = $3; mr = $5 }
-    END { printf "%s\t%s\trelax\t%s steps\t1\t1\t\t\t%d\t\t\t%s\t\t%s\t%s\t%s\t\t\t\n", n, atoms, steps, first - last, mr, t, w, p }' \
-    "$curves" >> "$results"
+  row results scene="$name" atoms="$(count_atoms "$data")" method=relax param="$((relax_chunks * relax_steps)) steps" \
+    np=1 rep=1 deleted=$((first - a)) overlap="$mr" op_seconds="$(tail -1 "$out/relax.tsv" | cut -f3)" \
+    wall_seconds="$wall" peak_kb="$peak"
 }
-# speedup NAME DATAFILE REPEATS: the defaults on 1 and 2 processes, interleaved.
-speedup() {
-  local name=$1 data=$2 reps=$3 rep np
-  for rep in $(seq "$reps"); do
-    for np in 1 2; do
-      run_fix "speedup_$name" "$data" "fix defaults" 1000 "$np" "$rep"
-      rm -f "$last_run/after.dump"
-    done
-  done
-}
-# series_gap NAME DATAFILE RMAX REPEATS; series_rbar NAME MATRIX REPEATS CUT
-series_gap() {
-  local name=$1 data=$2 rmax=$3 reps=$4 rep g
-  for rep in $(seq "$reps"); do
-    for g in 1 10 100 1e20; do
-      local gap
-      gap=$([ "$g" = 1e20 ] && echo 1e20 || awk -v g="$g" -v r="$rmax" 'BEGIN {print g * r}')
-      run_fix "gap" "$data" "fix search" "$g" 1 "$rep" -var opts "search $gap"
-      rm -f "$last_run/after.dump"
-    done
-  done
-}
-series_rbar() {
-  local matrix=$1 lx=$2 cut=$3 reps=$4 rep f scene
-  # One bar along x at mid-height; its spheres stay 7.66 mm apart (the
-  # overlapping chain of the 5 mm bar): thinner bars are beads on the same
-  # line, so the rebar count stays and only the radius changes.
-  for f in 1 1e-2 1e-3 1e-4; do
-    scene="$out/scenes/rbar_$f.data"
-    if [ ! -f "$scene" ]; then
-      BAR_RADIUS=$(awk -v f="$f" 'BEGIN {print 0.005 * f}') BAR_STEP=0.00766 \
-        bash "$top/bench/make_bars.sh" "$out/scenes/rbar_bars.data" "$lx" 0.25 0.25 line 1
-      mpirun -np 1 "$lmp" -in "$inputs/in.prepare" -var matrix "$matrix" -var bars "$out/scenes/rbar_bars.data" \
-        -var out "$scene" -var cut "$cut" -log none -screen none
-    fi
-  done
-  for rep in $(seq "$reps"); do
-    for f in 1 1e-2 1e-3 1e-4; do
-      scene="$out/scenes/rbar_$f.data"
-      REBAR=$(rebar_of "$scene") run_fix "rbar" "$scene" "fix rebar radius" "$f" 1 "$rep"
-      rm -f "$last_run/after.dump"
-    done
-  done
-}
-finish() {
-  meta "load_end" "$(cut -d' ' -f1-3 /proc/loadavg)"
-  meta "minutes" "$(awk -v s="$(( $(date +%s) - start_s ))" 'BEGIN {printf "%.1f", s / 60}')"
-  # README.md's figures from the same run: the repository's own when the
-  # page goes to docs/, else a copy beside the page (a trial or --quick run).
-  readme=$top/README.md
-  if [ "$quick" = 1 ] || [ -n "${REINFORCE_BENCH_DOCS:-}" ]; then
-    readme=$docs/README.md
-    cp "$top/README.md" "$readme"
-  fi
-  /usr/bin/python3 "$top/bench/report.py" "$out" "$docs" "$readme"
-  echo "wrote $docs/benchmarks.md"
-}
-
-# The seed paper's placement mode, named so in every table.
-size_fit="fix size fit (seed paper)"
-# liggghts_part REPEATS: the LIGGGHTS example with the fix's defaults and size fit.
-liggghts_part() {
-  if [ ! -x "$liggghts" ]; then
-    meta "skipped" "liggghts"; echo "== liggghts: no $liggghts, skipped"; return 0
-  fi
+# scaling NAME LX LY BARS CUT REPLICATION: BARS bars along x in the 0.60 beam
+# packing cut at CUT (0: not) and replicated, the fix's defaults 3 times.
+scaling() {
   local rep
-  for rep in $(seq "$1"); do
-    run_liggghts "fix defaults" "$rep"
-    [ "$rep" = 1 ] && quality_of liggghts - "fix defaults" 1000 0.003 0.005 "$last_run/liggghts_bench.data"
-    [ "$quick" = 1 ] && return 0
-    run_liggghts "$size_fit" "$rep" "size fit"
-    [ "$rep" = 1 ] && quality_of liggghts - "$size_fit" 1000 0.003 0.005 "$last_run/liggghts_bench.data"
-    run_liggghts "fix grow each" "$rep" "grow each"
-    [ "$rep" = 1 ] && quality_of liggghts - "fix grow each" 1000 0.003 0.005 "$last_run/liggghts_bench.data"
-  done
-  return 0
+  bash "$top/bench/make_bars.sh" "$out/scenes/bars.data" "$2" "$3" 0.25 line "$4"
+  data="$out/scenes/scaling.data"
+  prepared "$data" "$out/scenes/bars.data" -var matrix "$beam/matrix_phi060.data.gz" -var cut "$5" -var rep "$6"
+  for rep in 1 2 3; do series "$1" "$data" "fix defaults" 1 "$rep"; done
+  rm -f "$data"
 }
 
-beam="$top/examples/beam/data"
-# The beam's five bars (examples/beam/make_bars.sh) in grow_packing's terms:
-# 65 spheres of radius 5 mm from x = 5 mm to 495 mm.
-beam_bars=(--box 0 0.5 0 0.25 0 0.25)
-for yz in "0.04 0.04" "0.125 0.04" "0.21 0.04" "0.04 0.21" "0.21 0.21"; do
-  read -r y z <<<"$yz"
-  beam_bars+=(--bar 0.005 "$y" "$z" 0.495 "$y" "$z" 0.005 0.00766)
+# --- the run ----------------------------------------------------------------------------------------
+start_s=$(date +%s)
+meta quick "$quick"
+meta started "$(date -u '+%Y-%m-%d %H:%M UTC')"
+meta commit "$(git -C "$top" rev-parse --short HEAD 2>/dev/null || echo unknown)"
+for p in "${parts[@]}"; do
+  [ "$quick" = 1 ] && [[ " more slab scaling " == *" $p "* ]] && continue
+  part "$p" || continue
+  for s in "${scenes[@]}"; do
+    IFS=$'\t' read -r _ name spart kind rmin rmax rbar reps phi seed <<<"$s"
+    if [ "$spart" != "$p" ]; then continue
+    elif [ "$kind" = methods ]; then bench_scene "$name" "$rmin" "$rmax" "$rbar" "${repeats:-$reps}" scenes
+    else grown "$name" "$kind" "$seed" "$rmin" "$rmax" "$phi"; fi
+  done
+  case $p in
+    liggghts)
+      if [ -x "$liggghts" ]; then bench_scene liggghts 0.003 0.005 0.0025 "$liggghts_repeats" liggghts "$liggghts_methods"
+      else meta skipped liggghts; echo "== liggghts: no $liggghts, skipped"; fi ;;
+    speedup)
+      for s in "${speedups[@]}"; do speedup $s; done
+      # The cost of the rounds' exchange against the number of partners (the model of larger runs).
+      [ "$quick" = 1 ] || mpirun -np 2 "$REINFORCE_BUILD/bench/exchange_cost" > "$out/exchange_cost.tsv" ;;
+    slab) speedup slab 5; bench_scene slab 0.0025 0.0075 0.005 3 slab ;;    # no relaxation: too long
+    gap)
+      scene_file "$gap_scene"
+      for rep in $(seq "$gap_repeats"); do
+        for g in "${gaps[@]}"; do series gap "$data" "fix search" 1 "$rep" "${g% *}" "search ${g#* }"; done
+      done ;;
+    rbar)    # one bar along x at mid-height in the 0.60 beam packing, its rebar radius F times 5 mm; its
+      # spheres stay 7.66 mm apart (the 5 mm bar's chain: thinner bars are beads on the same line)
+      for rep in $(seq "$rbar_repeats"); do
+        for f in "${rbars[@]}"; do
+          data="$out/scenes/rbar_$f.data"
+          [ -f "$data" ] || BAR_RADIUS=$(calc "0.005 * $f") BAR_STEP=0.00766 \
+            bash "$top/bench/make_bars.sh" "$out/scenes/rbar_bars.data" "$rbar_lx" 0.25 0.25 line 1
+          prepared "$data" "$out/scenes/rbar_bars.data" -var matrix "$beam/matrix_phi060.data.gz" -var cut "$rbar_cut"
+          REBAR=$(count_atoms "$data" 2) series rbar "$data" "fix rebar radius" 1 "$rep" "$f" ""
+        done
+      done ;;
+    relax) for s in "${relax_scenes[@]}"; do relax "$s" 0.0025; done ;;
+    scaling)    # one bar in growing scenes (the work fixed), then 1 to 16 bars in one scene (the work grows)
+      for r in "0.125 1 1 1" "0 1 1 1" "0 2 2 1" "0 4 2 2"; do
+        scaling scaling_size 0.125 0.25 1 ${r% * * *} "${r#* }"
+      done
+      for n in 1 2 4 8 16; do scaling scaling_targets 1.0 1.0 "$n" 0 "2 4 1"; done ;;
+  esac
 done
+# The rows this run's tables call for, which report.py --check counts: per scene
+# a row of results and of quality per method that runs on scenes, the
+# LIGGGHTS example its methods, every series point its row.
+on() { cut -f6 "$top/bench/methods.tsv" | grep -c "\b$1\b"; }    # on WHERE: how many methods run there
+n=$(printf '%s\n' "${scenes[@]}" | grep -c $'\tmethods\t') lig=0
+[ ! -x "$liggghts" ] || lig=$(($(on liggghts) < liggghts_methods ? $(on liggghts) : liggghts_methods))
+[ "$quick" = 0 ] || meta want "results $((n * $(on scenes) + lig + ${#relax_scenes[@]} + ${#nps[@]} + ${#gaps[@]} \
+  + ${#rbars[@]})) quality $((n * $(on scenes) + lig)) reference $((${#scenes[@]} - n)) relax $((${#relax_scenes[@]} \
+  * (relax_chunks + 1)))"
+meta load_end "$(cut -d' ' -f1-3 /proc/loadavg)"
+meta minutes "$(calc "($(date +%s) - $start_s) / 60" %.1f)"
+# README.md's figures from the same run: the repository's own when the page goes
+# to docs/, else a copy beside the page (a trial or --quick run).
+readme=$top/README.md
+if [ "$quick" = 1 ] || [ -n "${REINFORCE_BENCH_DOCS:-}" ]; then readme=$docs/README.md; cp "$top/README.md" "$readme"; fi
+/usr/bin/python3 "$top/bench/report.py" "$out" "$docs" "$readme"
 if [ "$quick" = 1 ]; then
-  # The quick case checks that every figure is produced, not its precision:
-  # a tenth of scene_quality's sample points (most of its time).
-  export QUALITY_ARGS=${QUALITY_ARGS:---points 200000}
-  small="$out/scenes/small.data"
-  "$make_scene" "$small" --fcc --box 0 0.2 0 0.1 0 0.1 --radius 0.005 0.0075 \
-    --bar 0.01 0.05 0.05 0.19 0.05 0.05 0.005 0.0077
-  meta scenes "small narrow liggghts"
-  # The narrow scene in small: one bar in a box of about 1,400 spheres.
-  narrow_box=(--box 0 0.12 0 0.1 0 0.1 --bar 0.005 0.05 0.05 0.115 0.05 0.05 0.005 0.0075)
-  part reference && grow_scene narrow around "$out/scenes/narrow_small_ref.data" 12 0.004 0.005 0.58 "${narrow_box[@]}"
-  part compare && bench_scene small "$small" 0.005 0.0075 0.005 1
-  if part narrow; then
-    grow_scene narrow alone "$out/scenes/narrow_small.data" 11 0.004 0.005 0.58 "${narrow_box[@]}"
-    bench_scene narrow "$out/scenes/narrow_small.data" 0.004 0.005 0.005 1
-  fi
-  part liggghts && liggghts_part 1
-  part relax && relax small "$small" 0.005 2 20
-  part speedup && speedup small "$small" 1
-  part gap && series_gap small "$small" 0.0075 1
-  part rbar && series_rbar "$beam/matrix_phi060.data.gz" 0.125 0.125 1
-  finish
-  rows=$(($(wc -l < "$results") - 1))
-  echo "bench --quick: $rows result rows, $(($(wc -l < "$qual") - 1)) quality rows, $(($(wc -l < "$curves") - 1)) relaxation points in $out"
-  lig=0
-  [ -x "$liggghts" ] && lig=1
-  [ "$rows" -eq $((8 + 1 + 2 + 4 + 4 + 8 + lig)) ] && [ "$(wc -l < "$qual")" -eq $((17 + lig)) ] &&
-    [ "$(wc -l < "$curves")" -eq 4 ] && [ "$(wc -l < "$refs")" -eq 3 ] ||
-    { echo "bench --quick: missing rows"; exit 1; }
-  awk -F'\t' 'NR > 1 && $1 == "narrow" && $13 == "" {bad = 1} END {exit bad}' "$qual" \
-    || { echo "bench --quick: no reference figures in the narrow scene's quality"; exit 1; }
-  awk -F'\t' 'NR > 1 && $3 ~ /^fix/ && ($7 == "" || $14 == "" || $18 == "") {bad = 1} END {exit bad}' "$results" \
-    || { echo "bench --quick: fix row incomplete"; exit 1; }
-  grep -q "^## Parallel speedup" "$docs/benchmarks.md" && grep -q "^## Scene quality" "$docs/benchmarks.md" &&
-    grep -q "^## Cost against rebar radius and search gap" "$docs/benchmarks.md" &&
-    grep -q "^## Against a packing grown around the bars" "$docs/benchmarks.md" &&
-    grep -q "^## Profiles" "$docs/benchmarks.md" ||
-    { echo "bench --quick: report section missing"; exit 1; }
-  sed -n '/written by bench\/report.py/,/end of what bench\/report.py writes/p' "$docs/README.md" |
-    grep -q "^\* Where the matrix radii are close" ||
-    { echo "bench --quick: README.md's figures not written"; exit 1; }
-  for sc in small narrow; do
-    grep -q '<polyline points="[0-9]' "$docs/img/profile_$sc.svg" ||
-      { echo "bench --quick: no profile plot of $sc"; exit 1; }
-  done
-  [ "$(grep -c '<polyline' "$docs/img/profile_narrow.svg")" -eq 5 ] ||
-    { echo "bench --quick: the narrow profile plot lacks a method or its reference"; exit 1; }
-  [ -z "${REINFORCE_BENCH_OUT:-}" ] && rm -rf "$out"
-  exit 0
+  /usr/bin/python3 "$top/bench/report.py" --check "$out" "$docs" || die "--quick: incomplete, see $out"
+  [ -n "${REINFORCE_BENCH_OUT:-}" ] || rm -rf "$out"
 fi
-
-meta scenes "beam050 beam060 beam064 narrow one fibres slab liggghts"
-for phi in 050 060 064; do
-  scene="$out/scenes/beam$phi.data"
-  [ -f "$scene" ] || mpirun -np 1 "$lmp" -in "$inputs/in.prepare" -var matrix "$beam/matrix_phi$phi.data.gz" \
-    -var bars "$beam/bars.data" -var out "$scene" -log none -screen none
-done
-# The references: the beam's law at 0.60 (and the narrow scene's) grown
-# around the beam's bars; compare and narrow measure against them.
-# beam060 has two: grow_packing's (our fast grower, a geometric protocol)
-# and make_packing.lmp's (the law that made the beam's packings, by LAMMPS).
-if part reference; then
-  grow_scene beam050 around "$out/scenes/beam050_ref.data" 12 0.0025 0.0075 0.50 "${beam_bars[@]}"
-  grow_scene beam060 around "$out/scenes/beam060_ref.data" 12 0.0025 0.0075 0.60 "${beam_bars[@]}"
-  grow_scene narrow around "$out/scenes/narrow_ref.data" 12 0.004 0.005 0.60 "${beam_bars[@]}"
-  for phi in 050 060 064; do
-    lammps_ref "beam$phi" "$out/scenes/beam${phi}_lammps_ref.data" "0.${phi#0}" 48271 "$beam/bars.data" \
-      0.0025 0.0075
-  done
-fi
-part compare && for phi in 050 060 064; do
-  bench_scene "beam$phi" "$out/scenes/beam$phi.data" 0.0025 0.0075 0.005 3
-done
-# The narrow scene: radii 4-5 mm (ratio 1.25) at 0.60 in the beam's box,
-# grown alone (grow_packing, seed 11), then the beam's bars added.
-if part narrow; then
-  grow_scene narrow alone "$out/scenes/narrow.data" 11 0.004 0.005 0.60 "${beam_bars[@]}"
-  bench_scene narrow "$out/scenes/narrow.data" 0.004 0.005 0.005 2
-fi
-# The one-radius and thin-fibre scenes of the quality tests (box 0.18 x
-# 0.14 x 0.14 m, walls; defined once, tests/quality/make_scenes.sh): one
-# radius 4 mm at 0.56 with three bars, and radii 2.5-7.5 mm at 0.58 with
-# 200 fibres of 1 mm spheres. Around the fibres grow_packing jams: that
-# scene has no reference.
-if part more; then
-  mapfile -t one_args < <(bash "$top/tests/quality/make_scenes.sh" --args one)
-  mapfile -t fibre_args < <(bash "$top/tests/quality/make_scenes.sh" --args fibres)
-  grow_scene one around "$out/scenes/one_ref.data" 12 0.004 0.004 0.56 "${one_args[@]}"
-  grow_scene one alone "$out/scenes/one.data" 11 0.004 0.004 0.56 "${one_args[@]}"
-  bench_scene one "$out/scenes/one.data" 0.004 0.004 0.005 2
-  grow_scene fibres alone "$out/scenes/fibres.data" 11 0.0025 0.0075 0.58 "${fibre_args[@]}"
-  bench_scene fibres "$out/scenes/fibres.data" 0.0025 0.0075 0.001 2
-fi
-part liggghts && liggghts_part 2
-if part speedup; then
-  speedup beam060 "$out/scenes/beam060.data" 25
-  # The cost of the rounds' exchange against the number of partners (the
-  # model of larger runs).
-  mpirun -np 2 "$REINFORCE_BUILD/bench/exchange_cost" > "$out/exchange_cost.tsv"
-fi
-part gap && series_gap beam060 "$out/scenes/beam060.data" 0.0075 3
-part rbar && series_rbar "$beam/matrix_phi060.data.gz" 0.5 0 3
-part relax && for phi in 050 060 064; do
-  relax "beam$phi" "$out/scenes/beam$phi.data" 0.0025 10 500
-done
-
-# The slab: the 0.60 beam packing replicated 2 x 5 x 2 (1.0 x 1.25 x 0.5 m,
-# 573k matrix spheres) with a mesh of bars 0.1 m apart in two layers.
-slab="$out/scenes/slab.data"
-if [[ " ${REINFORCE_BENCH_SKIP:-} " != *" slab "* ]] && [ ! -f "$slab" ]; then
-  bash "$top/bench/make_bars.sh" "$out/scenes/mesh.data" 1.0 1.25 0.5 mesh 0.1 0.04
-  mpirun -np 1 "$lmp" -in "$inputs/in.prepare" -var matrix "$beam/matrix_phi060.data.gz" \
-    -var bars "$out/scenes/mesh.data" -var out "$slab" -var rep "2 5 2" -log none -screen none
-fi
-if part slab; then
-  speedup slab "$slab" 5
-  for rep in 1 2 3; do
-    run_fix slab "$slab" "$size_fit" 1000 1 "$rep" -var opts "size fit"
-    rm -f "$last_run/after.dump"
-    run_delete slab "$slab" 0.0125 1 "$rep" 0.0025; rm -f "$last_run/after.dump"
-    run_delete slab "$slab" 0.0075 1 "$rep" 0.0025; rm -f "$last_run/after.dump"
-  done
-fi
-
-# Scaling: the same single bar in growing scenes (work fixed, size grows),
-# and a growing number of bars in one scene (size fixed, work grows).
-if part scaling; then
-  for rep in "0.125:1 1 1" "0:1 1 1" "0:2 2 1" "0:4 2 2"; do
-    cut=${rep%%:*} r=${rep##*:}
-    name="size_$(echo "$r" | tr -d ' ')_cut$cut"
-    scene="$out/scenes/$name.data"
-    bash "$top/bench/make_bars.sh" "$out/scenes/onebar.data" 0.125 0.25 0.25 line 1
-    mpirun -np 1 "$lmp" -in "$inputs/in.prepare" -var matrix "$beam/matrix_phi060.data.gz" \
-      -var bars "$out/scenes/onebar.data" -var out "$scene" -var rep "$r" -var cut "$cut" -log none -screen none
-    for rep_i in 1 2 3; do
-      run_fix scaling_size "$scene" "fix defaults" 1000 1 "$rep_i"; rm -f "$last_run/after.dump"
-    done
-    rm -f "$scene"
-  done
-  for bars in 1 2 4 8 16; do
-    scene="$out/scenes/bars$bars.data"
-    bash "$top/bench/make_bars.sh" "$out/scenes/nbars.data" 1.0 1.0 0.25 line "$bars"
-    mpirun -np 1 "$lmp" -in "$inputs/in.prepare" -var matrix "$beam/matrix_phi060.data.gz" \
-      -var bars "$out/scenes/nbars.data" -var out "$scene" -var rep "2 4 1" -log none -screen none
-    for rep_i in 1 2 3; do
-      run_fix scaling_targets "$scene" "fix defaults" 1000 1 "$rep_i"; rm -f "$last_run/after.dump"
-    done
-    rm -f "$scene"
-  done
-fi
-finish

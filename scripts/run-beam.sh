@@ -69,7 +69,7 @@ cat out/quality.md
 echo
 # One plot per density: solid fraction against distance from the bars.
 for phi in ${REINFORCE_BEAM_PHIS:-050 060 064}; do
-  python3 "$top/bench/profile_plot.py" "out/profile_phi$phi.svg" \
+  python3 "$top/bench/plot.py" "out/profile_phi$phi.svg" \
     "beam, solid fraction 0.${phi#0}: matrix solid fraction near the bars" < "out/profile_phi$phi.tsv"
 done
 echo "profiles: $(ls "$top"/examples/beam/out/profile_phi*.svg | tr '\n' ' ')"

@@ -26,7 +26,8 @@ setup_skips() {
 
 packages=(build-essential cmake libopenmpi-dev openmpi-bin libfmt-dev libgtest-dev clang
           libclang-rt-14-dev time ccache     # ccache: the source-built hosts' builds (test.sh)
-          python3)                           # the layout command (src/layout)
+          python3                            # the layout command (src/layout)
+          gnuplot-nox)                       # the plots of bench/ and run-beam.sh (bench/plot.py)
 setup_skips lammps || packages+=(lammps liblammps-dev)
 setup_skips liggghts || packages+=(liggghts libliggghts-dev)
 missing=()
