@@ -83,7 +83,7 @@ public:
 private:
   // grow balance: the block's seeds deleted, the deepest centre first (a
   // centre inside a bar sphere first of all), until the deleted volume
-  // reaches kBalanceShare times the seeds' volume inside the bars; the
+  // is nearest kBalanceShare times the seeds' volume inside the bars; the
   // rest grown back together with the whole zone (kBalance), from where
   // they were pushed out of the bars. A shrunk seed deleted stays shrunk
   // where the relocation placed it (its volume short of its own counts).
@@ -120,16 +120,19 @@ private:
     // Bodies are in id order: equal depths go by id.
     std::stable_sort(order.begin(), order.end(),
                      [](const Candidate &a, const Candidate &b) { return a.depth < b.depth; });
+    // Deleted in that order while each brings the deleted volume nearer the
+    // goal; the rest grow.
     double deleted = 0;
+    bool deleting = true;
     std::vector<std::size_t> growing;
     for (const Candidate &c : order) {
       const Body &seed = bodies_[c.i];
-      if (deleted < goal) {
-        deleted += ball_volume(seed.R);
-        if (seed.twin >= 0)
-          deleted -= ball_volume(bodies_[static_cast<std::size_t>(seed.twin)].R);
-        else if (c.depth < 0)
-          stats.displaced++;
+      double volume = ball_volume(seed.R);
+      if (seed.twin >= 0) volume -= ball_volume(bodies_[static_cast<std::size_t>(seed.twin)].R);
+      deleting = deleting && deleted + 0.5 * volume < goal;
+      if (deleting) {
+        deleted += volume;
+        if (seed.twin < 0 && c.depth < 0) stats.displaced++;
         continue;
       }
       growing.push_back(c.i);
@@ -395,7 +398,7 @@ private:
         for (std::size_t i : active_) bodies_[i].scale = step == plan.stages ? 1.0 : scale;
         if (scale < plan.pull_until) {
           relax_.set_pull(plan.pull);
-          relax_.run(plan.pull_iters, 0, stats.sweeps);
+          relax_.run(plan.pull_iters, -1, stats.sweeps);    // every step, overlaps or not
           relax_.set_pull(0);
         }
       }
