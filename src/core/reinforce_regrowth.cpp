@@ -707,7 +707,7 @@ private:
   std::vector<std::vector<Contact>> contacts_;
   std::vector<std::size_t> active_;    // the spheres that move now (by id)
   std::vector<Vec3> saved_;            // where they were before it
-  SoftRelaxation relax_{bodies_, contacts_, active_, domain_, settings_.tol};
+  SoftRelaxation relax_{bodies_, active_, domain_, settings_.tol};
 };
 
 }    // namespace
