@@ -1,5 +1,6 @@
 // The fix's arguments, rounds and summary line (host independent).
 #include "reinforce_fix_options.h"
+#include "reinforce_regrowth_policy.h"
 #include "reinforce_schedule.h"
 
 #include <gtest/gtest.h>
@@ -321,13 +322,31 @@ TEST(FixOptions, GrowEachOrTogether)
                   .grow_together);
   const std::string I = "Illegal fix reinforce/invert command: ";
   EXPECT_EQ(error_of({"0", "bars", "grow", "both"}),
-            I + "grow must be 'each' or 'together', got 'both'");
+            I + "grow must be 'each', 'together' or 'balance', got 'both'");
   EXPECT_EQ(error_of({"0", "bars", "grow"}), I + "missing value for keyword 'grow'");
   const std::string off = I + "grow sets how the regrowth grows its seeds, and the regrowth is "
                               "off (regrow no, unplaced keep, or size fit without regrow)";
   EXPECT_EQ(error_of({"0", "bars", "grow", "together", "regrow", "no"}), off);
   EXPECT_EQ(error_of({"0", "bars", "unplaced", "keep", "grow", "each"}), off);
   EXPECT_EQ(error_of({"0", "bars", "size", "fit", "grow", "together"}), off);
+  EXPECT_EQ(error_of({"0", "bars", "regrow", "no", "grow", "balance"}), off);
+  // balance: the zone rebuilt, kBalanceWidth matrix radii wide unless
+  // regrow gives a width.
+  const Settings balance =
+      make_settings(parse_fix_arguments({"0", "bars", "grow", "balance"}), 0.1, 0.3, 100);
+  EXPECT_TRUE(balance.grow_balance);
+  EXPECT_FALSE(balance.grow_together);
+  EXPECT_DOUBLE_EQ(balance.regrow, regrowth_policy::kBalanceWidth * 0.3);
+  EXPECT_DOUBLE_EQ(
+      make_settings(parse_fix_arguments({"0", "bars", "grow", "balance", "regrow", "0.5"}), 0.1,
+                    0.3, 100)
+          .regrow,
+      0.5);
+  EXPECT_FALSE(make_settings(parse_fix_arguments({"0", "bars", "grow", "balance", "grow", "each"}),
+                             0.1, 0.3, 100)
+                   .grow_balance);
+  EXPECT_FALSE(together.grow_balance);
+  EXPECT_FALSE(each.grow_balance);
 }
 
 TEST(FixOptions, ImpossibleRadiusRangeFromScene)

@@ -1,5 +1,7 @@
 #include "reinforce_fix_options.h"
 
+#include "reinforce_regrowth_policy.h"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -138,7 +140,15 @@ const Keyword kKeywords[] = {
     {"grow", 1,
      [](FixOptions &o, const std::string *v) {
        o.grow_set = true;
-       o.grow_together = parse_either("grow", v[0], "each", "together");
+       o.grow_balance = v[0] == "balance";
+       if (o.grow_balance) {
+         o.grow_together = false;
+         return;
+       }
+       if (v[0] != "each" && v[0] != "together")
+         throw OptionError(kIllegal + "grow must be 'each', 'together' or 'balance', got '" + v[0] +
+                           "'");
+       o.grow_together = v[0] == "together";
      }},
     {"walls", 1,
      [](FixOptions &o, const std::string *v) {
@@ -211,12 +221,15 @@ Settings make_settings(const FixOptions &o, double matrix_rmin, double matrix_rm
   // stays as it was unless asked), never with unplaced keep (which leaves
   // such targets where they are); its zone reaches 5 radii, where the
   // seeds grown together find the room they need, 3 (the second shell of
-  // neighbours of a seed) one by one (docs/design.md, "Regrowth").
+  // neighbours of a seed) one by one, kBalanceWidth where the zone is
+  // rebuilt (docs/design.md, "Regrowth").
   const bool regrow =
       !o.regrow_off && !o.keep_unplaced && (o.regrow_set || o.size == SizeMode::Keep);
-  const double width = (o.grow_together ? 5 : 3) * matrix_rmax;
+  const double width =
+      (o.grow_balance ? regrowth_policy::kBalanceWidth : (o.grow_together ? 5 : 3)) * matrix_rmax;
   s.regrow = regrow ? std::min(o.regrow > 0 ? o.regrow : width, bound) : 0;
   s.grow_together = o.grow_together;
+  s.grow_balance = o.grow_balance;
   return s;
 }
 

@@ -48,9 +48,11 @@ struct FixOptions {
   double regrow = 0;
   // grow together (the default) or each: a block's seeds all at once, or
   // one by one (its default width then 3 * the matrix's largest radius,
-  // else 5).
+  // else 5); or balance: the block's zone rebuilt, its count from the
+  // volume balance (its default width regrowth_policy::kBalanceWidth).
   bool grow_set = false;
   bool grow_together = true;
+  bool grow_balance = false;
 };
 
 // Smallest accepted `tol`: below it the rounding of coordinates (and of the

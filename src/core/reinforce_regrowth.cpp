@@ -1,5 +1,6 @@
 #include "reinforce_regrowth.h"
 
+#include "reinforce_ball_sample.h"
 #include "reinforce_cell_grid.h"
 #include "reinforce_regrowth_zone.h"
 #include "reinforce_soft_relaxation.h"
@@ -12,6 +13,22 @@ namespace reinforce {
 namespace {
 
 using namespace regrowth_policy;
+
+// How seeds grow together: from `start` of their radius in `stages` equal
+// stages of at most `stage_iters` FIRE steps; with matrix_too the zone's
+// matrix shrinks and grows with them, pulled towards the bars (`pull`
+// for `pull_iters` steps a stage) while the radii are below `pull_until`.
+struct GrowthPlan {
+  double start;
+  int stages;
+  int stage_iters;
+  bool matrix_too;
+  double pull, pull_until;
+  int pull_iters;
+};
+constexpr GrowthPlan kTogether{kStartScale, kGrowthSteps, kStepIters, false, 0, 0, 0};
+constexpr GrowthPlan kBalance{kBalanceStart, kBalanceStages,    kBalanceStageIters, true,
+                              kBalancePull,  kBalancePullUntil, kBalancePullIters};
 
 // The zone of one block's seeds: its bodies (seeds, movable matrix
 // spheres, frozen spheres around them), their possible contacts, and the
@@ -40,6 +57,7 @@ public:
   // seeds after it.
   std::vector<RoundRecord> run(RegrowthStats &stats)
   {
+    if (settings_.grow_balance) return rebuild(stats);
     delete_displaced(stats);
     std::vector<std::size_t> waiting;
     for (std::size_t i = 0; i < bodies_.size(); ++i)
@@ -63,6 +81,93 @@ public:
   }
 
 private:
+  // grow balance: the block's seeds deleted, the deepest centre first (a
+  // centre inside a bar sphere first of all), until the deleted volume
+  // is nearest kBalanceShare times the seeds' volume inside the bars; the
+  // rest grown back together with the whole zone (kBalance), from where
+  // they were pushed out of the bars. A shrunk seed deleted stays shrunk
+  // where the relocation placed it (its volume short of its own counts).
+  std::vector<RoundRecord> rebuild(RegrowthStats &stats)
+  {
+    struct Candidate {
+      double depth;    // centre to the nearest bar surface (< 0: inside)
+      std::size_t i;
+    };
+    std::vector<Candidate> order;
+    double goal = 0;
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      Body &seed = bodies_[i];
+      if (!seed.seed) continue;
+      seed.present = false;    // vacant until it grows
+      // A shrunk sphere that may not move (beyond the zone, an image) stays.
+      if (seed.twin >= 0 && !bodies_[static_cast<std::size_t>(seed.twin)].movable) continue;
+      double depth = INFINITY;
+      std::vector<std::size_t> bars;
+      for (const Contact &c : contacts_[i]) {
+        const Body &o = bodies_[static_cast<std::size_t>(c.j)];
+        if (!o.rebar) continue;
+        depth = std::min(depth, norm(seed.x0 - o.x0) - o.R);
+        if (norm(seed.x0 - o.x0) < seed.R + o.R) bars.push_back(static_cast<std::size_t>(c.j));
+      }
+      const double inside = ball_fraction(seed.x0, seed.R, [&](Vec3 p) {
+        for (std::size_t b : bars)
+          if (norm2(p - bodies_[b].x0) < bodies_[b].R * bodies_[b].R) return true;
+        return false;
+      });
+      goal += kBalanceShare * inside * ball_volume(seed.R);
+      order.push_back({depth, i});
+    }
+    // Bodies are in id order: equal depths go by id.
+    std::stable_sort(order.begin(), order.end(),
+                     [](const Candidate &a, const Candidate &b) { return a.depth < b.depth; });
+    // Deleted in that order while each brings the deleted volume nearer the
+    // goal; the rest grow.
+    double deleted = 0;
+    bool deleting = true;
+    std::vector<std::size_t> growing;
+    for (const Candidate &c : order) {
+      const Body &seed = bodies_[c.i];
+      double volume = ball_volume(seed.R);
+      if (seed.twin >= 0) volume -= ball_volume(bodies_[static_cast<std::size_t>(seed.twin)].R);
+      deleting = deleting && deleted + 0.5 * volume < goal;
+      if (deleting) {
+        deleted += volume;
+        if (seed.twin < 0 && c.depth < 0) stats.displaced++;
+        continue;
+      }
+      growing.push_back(c.i);
+    }
+    std::sort(growing.begin(), growing.end());
+    std::vector<Vec3> first;
+    for (std::size_t i : growing) first.push_back(out_of_bars(i));
+    if (!growing.empty()) grow_all(growing, first, kBalance, stats);
+    return records(stats);
+  }
+
+  // Where seed i starts its growth: where it was, pushed out of the bar
+  // spheres it overlaps at kBalanceStart of its radius (a few passes, for
+  // the beads of a chain); where it was if that leaves its cap or the walls
+  // refuse it (the growth pushes it out then).
+  Vec3 out_of_bars(std::size_t i) const
+  {
+    const Body &seed = bodies_[i];
+    const double r = kBalanceStart * seed.R;
+    Vec3 x = seed.x0;
+    for (int pass = 0; pass < 3; ++pass)
+      for (const Contact &c : contacts_[i]) {
+        const Body &o = bodies_[static_cast<std::size_t>(c.j)];
+        if (!o.rebar) continue;
+        const double d = norm(x - o.x0);
+        if (!(d < o.R + r)) continue;
+        const Vec3 n =
+            d > 1e-12 * o.R ? (1 / d) * (x - o.x0) : Vec3{seed.id < o.id ? -1.0 : 1.0, 0, 0};
+        x = o.x0 + (o.R + r) * n;
+      }
+    if (norm(x - seed.x0) > seed.cap || !admissible(seed.x0, x, seed.R, domain_, settings_.tol))
+      return seed.x0;
+    return x;
+  }
+
   // Where seed s may start: the points of a lattice (a quarter of its
   // radius apart) within its cap of where it was that overlap least, the
   // least first (then the nearest), admissible, at most kStarts, at least
@@ -265,35 +370,47 @@ private:
       growing.push_back(i);
       first.push_back(places.front());
     }
-    if (!growing.empty()) grow_all(growing, first, stats);
+    if (!growing.empty()) grow_all(growing, first, kTogether, stats);
     std::vector<std::size_t> shrunk;
     for (std::size_t i : waiting)
       if (bodies_[i].twin >= 0 && !bodies_[i].placed) shrunk.push_back(i);
     return shrunk;
   }
 
-  // The seeds `growing` grown together from `first` (grow_together).
+  // The seeds `growing` grown together from `first` as `plan` says
+  // (grow_together, rebuild).
   void grow_all(std::vector<std::size_t> growing, const std::vector<Vec3> &first,
-                RegrowthStats &stats)
+                const GrowthPlan &plan, RegrowthStats &stats)
   {
     for (std::size_t n = 0; n < growing.size(); ++n) {
       Body &seed = bodies_[growing[n]];
       show_twin(seed, false);
       seed.present = true;
       seed.x = first[n];
-      seed.scale = kStartScale;
+      seed.scale = plan.start;
     }
     activate_zone();
     double worst = 0;
-    for (int step = 0; step <= kGrowthSteps && !growing.empty(); ++step) {
-      for (std::size_t i : growing)
-        bodies_[i].scale = kStartScale + (1 - kStartScale) * step / kGrowthSteps;
-      worst = relax_.run(kStepIters, kSettled, stats.sweeps);
+    for (int step = 0; step <= plan.stages && !growing.empty(); ++step) {
+      const double scale = plan.start + (1 - plan.start) * step / plan.stages;
+      for (std::size_t i : growing) bodies_[i].scale = scale;
+      if (plan.matrix_too) {
+        for (std::size_t i : active_) bodies_[i].scale = step == plan.stages ? 1.0 : scale;
+        if (scale < plan.pull_until) {
+          relax_.set_pull(plan.pull);
+          relax_.run(plan.pull_iters, -1, stats.sweeps);    // every step, overlaps or not
+          relax_.set_pull(0);
+        }
+      }
+      worst = relax_.run(plan.stage_iters, kSettled, stats.sweeps);
       while (worst > kAbort && !growing.empty()) {
         give_up(most_overlapped(growing), growing);
-        worst = relax_.run(kStepIters, kSettled, stats.sweeps);
+        worst = relax_.run(plan.stage_iters, kSettled, stats.sweeps);
       }
     }
+    // Every seed given up before the last stage: the matrix at its own radii.
+    if (plan.matrix_too)
+      for (std::size_t i : active_) bodies_[i].scale = 1;
     for (;;) {
       worst = relax_.run(kJudgeIters, kClear, stats.sweeps);
       if (!(worst > kNearlyJammed) || growing.empty()) break;
@@ -590,7 +707,7 @@ private:
   std::vector<std::vector<Contact>> contacts_;
   std::vector<std::size_t> active_;    // the spheres that move now (by id)
   std::vector<Vec3> saved_;            // where they were before it
-  SoftRelaxation relax_{bodies_, contacts_, active_, domain_, settings_.tol};
+  SoftRelaxation relax_{bodies_, active_, domain_, settings_.tol};
 };
 
 }    // namespace

@@ -11,6 +11,9 @@
 // A target the relocation placed shrunk across thin bars is a seed too
 // (grown with the others): its shrunk sphere gives way while it tries its
 // own radius, and stays where that fails.
+// Or (grow balance) the zone rebuilt: the seeds deleted by the volume
+// balance, deepest first, the rest grown back with the zone's matrix
+// shrunk and grown with them (every target placed shrunk is a seed then).
 #pragma once
 
 #include "reinforce_domain.h"

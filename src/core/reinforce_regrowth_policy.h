@@ -66,6 +66,27 @@ constexpr int kFinalSweeps = 200;
 // overlap exceeds kNearlyJammed rmin.
 constexpr int kJudgeIters = 1000;
 
+// grow balance: a block's zone rebuilt. Its default width kBalanceWidth
+// (matrix rmax): narrower zones jam near full size (docs/design.md). Its
+// seeds deleted, the deepest centre first, until the deleted volume reaches
+// kBalanceShare times the volume of the seeds inside the bars (the matrix
+// the bars displaced there). The rest, at their own radius, and the zone's
+// matrix start at kBalanceStart of their radii and grow back in
+// kBalanceStages equal stages of at most kBalanceStageIters FIRE steps
+// (fewer once no overlap exceeds kSettled rmin); while the radii are below
+// kBalancePullUntil each stage starts with kBalancePullIters steps pulling
+// each matrix sphere towards its bar by a force of kBalancePull r (times its
+// mobility). A seed overlapping more than kAbort rmin after a stage is
+// given up (deleted), as is one while the grown zone does not end clear.
+constexpr double kBalanceWidth = 8;
+constexpr double kBalanceShare = 1.3;
+constexpr double kBalanceStart = 0.8;
+constexpr int kBalanceStages = 10;
+constexpr int kBalanceStageIters = 300;
+constexpr double kBalancePullUntil = 0.97;
+constexpr int kBalancePullIters = 50;
+constexpr double kBalancePull = 0.002;
+
 // FIRE (Bitzek et al. 2006; harmonic overlap energy, unit stiffness and
 // mass): time step (start, largest, growth kFireGrow after kFireDelay
 // downhill steps, halved uphill), mixing (start, decay), the largest step

@@ -105,12 +105,8 @@ std::vector<std::vector<Contact>> zone_contacts(const std::vector<Body> &bodies)
       if (static_cast<std::size_t>(j) == i) return;
       const Body &o = bodies[static_cast<std::size_t>(j)];
       // Neither can come closer than this: caps bound their moves.
-      const double reach = b.R + o.R + b.cap + o.cap;
-      if (!(norm(b.x0 - o.x0) < reach)) return;
-      Contact c;
-      c.j = j;
-      if (!b.seed && !o.seed) c.allowed = std::max(0.0, b.R + o.R - norm(b.x0 - o.x0));
-      contacts[i].push_back(c);
+      if (!can_touch(b, o)) return;
+      contacts[i].push_back({j, allowed_overlap(b, o)});
     });
     std::sort(contacts[i].begin(), contacts[i].end(),
               [](const Contact &a, const Contact &c) { return a.j < c.j; });

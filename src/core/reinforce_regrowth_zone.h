@@ -7,6 +7,7 @@
 #include "reinforce_particle.h"
 #include "reinforce_vec3.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -51,6 +52,20 @@ std::vector<Body> zone_bodies(const std::vector<Particle> &reads,
 // For each movable body, the bodies it can touch within the caps of both
 // (sorted), with the overlap the pair has at the start.
 std::vector<std::vector<Contact>> zone_contacts(const std::vector<Body> &bodies);
+
+// Whether b and o can touch, each within its cap of where it started.
+inline bool can_touch(const Body &b, const Body &o)
+{
+  return norm(b.x0 - o.x0) < b.R + o.R + b.cap + o.cap;
+}
+
+// The overlap pair (b, o) may keep as they move (Contact::allowed): what
+// two matrix spheres overlapped at the start, none with a seed.
+inline double allowed_overlap(const Body &b, const Body &o)
+{
+  if (b.seed || o.seed) return 0;
+  return std::max(0.0, b.R + o.R - norm(b.x0 - o.x0));
+}
 
 // Its radius now.
 inline double radius(const Body &b)

@@ -17,13 +17,6 @@ namespace reinforce {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-double ball_volume(double r)
-{
-  return 4.0 / 3.0 * kPi * r * r * r;
-}
-
 // One target's relocation, given the scene and the settings.
 class Relocator {
 public:
@@ -202,7 +195,9 @@ Relocation relocate_targets(const std::vector<Particle> &all, const Settings &se
       stats.volume_after += ball_volume(scene.r(fresh));
       if (scene.r(fresh) < target.r * (1 - settings.tol)) {
         stats.shrunk++;
-        if (scene.thickest_rebar_overlapping(target.x, target.r) <= kThinBar * target.r)
+        // grow balance rebuilds the zone of every target placed shrunk.
+        if (settings.grow_balance ||
+            scene.thickest_rebar_overlapping(target.x, target.r) <= kThinBar * target.r)
           out.shrunk_by_thin.push_back({target.id, target.x, target.r});
       }
     } else {

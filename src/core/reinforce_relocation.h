@@ -59,7 +59,8 @@ struct Push {
 // A target placed with a radius below its own although only bars thin
 // beside it crossed it (no rebar sphere it overlaps is larger than
 // kThinBar of its radius): it displaced little, and the regrowth tries it
-// again at its own radius near where it was.
+// again at its own radius near where it was. With grow balance, every
+// target placed shrunk is taken up again.
 constexpr double kThinBar = 0.5;
 struct ShrunkTarget {
   std::int64_t id = 0;
@@ -69,7 +70,7 @@ struct ShrunkTarget {
 struct Relocation {
   std::vector<TargetResult> targets;           // in the order they were relocated
   std::vector<Push> pushes;                    // increasing id; none of the targets above
-  std::vector<ShrunkTarget> shrunk_by_thin;    // the targets above shrunk across thin bars
+  std::vector<ShrunkTarget> shrunk_by_thin;    // the targets above (grow balance: all shrunk)
 };
 
 // Relocates the Target particles for which `mine` is true (default: the

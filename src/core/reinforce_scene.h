@@ -3,6 +3,7 @@
 // relocation engine").
 #pragma once
 
+#include "reinforce_ball_sample.h"
 #include "reinforce_candidate_order.h"
 #include "reinforce_cell_grid.h"
 #include "reinforce_particle.h"
@@ -13,24 +14,6 @@
 #include <vector>
 
 namespace reinforce {
-
-// Fixed sample points of the unit ball (a cubic lattice, 9 per axis, 389
-// points): the volume fraction of a target inside the bars to about 1 %.
-inline const std::vector<Vec3> &unit_ball_points()
-{
-  static const std::vector<Vec3> points = [] {
-    std::vector<Vec3> p;
-    const int n = 9;
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j)
-        for (int k = 0; k < n; ++k) {
-          const Vec3 u{(2 * i + 1.0) / n - 1, (2 * j + 1.0) / n - 1, (2 * k + 1.0) / n - 1};
-          if (norm2(u) <= 1) p.push_back(u);
-        }
-    return p;
-  }();
-  return points;
-}
 
 // The spheres a process sees while it relocates: the particles, then the
 // relocated spheres and their periodic images as they are added. Present
@@ -125,17 +108,11 @@ public:
       if (rebar_[b] && norm(x_[b] - x) < r + r_[b]) bars.push_back(b);
     });
     if (bars.empty()) return 0;
-    const std::vector<Vec3> &points = unit_ball_points();
-    std::size_t inside = 0;
-    for (const Vec3 &u : points) {
-      const Vec3 p = x + r * u;
+    return ball_fraction(x, r, [&](Vec3 p) {
       for (int b : bars)
-        if (norm2(p - x_[b]) < r_[b] * r_[b]) {
-          ++inside;
-          break;
-        }
-    }
-    return static_cast<double>(inside) / points.size();
+        if (norm2(p - x_[b]) < r_[b] * r_[b]) return true;
+      return false;
+    });
   }
 
   // True when sphere (c, r) overlaps no present sphere by more than

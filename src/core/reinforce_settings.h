@@ -30,6 +30,9 @@ struct Settings {
   // The regrowth's seeds: all of a block's grown together (`grow
   // together`, the default), or one by one (`grow each`).
   bool grow_together = true;
+  // Or the zone of a block rebuilt around all of its seeds, their count
+  // from the volume balance (`grow balance`; grow_together is then false).
+  bool grow_balance = false;
 };
 
 }    // namespace reinforce

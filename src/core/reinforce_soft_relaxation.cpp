@@ -1,6 +1,7 @@
 #include "reinforce_soft_relaxation.h"
 
 #include "reinforce_boundaries.h"
+#include "reinforce_cell_grid.h"
 #include "reinforce_regrowth_policy.h"
 
 #include <algorithm>
@@ -10,11 +11,9 @@ namespace reinforce {
 
 using namespace regrowth_policy;
 
-SoftRelaxation::SoftRelaxation(std::vector<Body> &bodies,
-                               const std::vector<std::vector<Contact>> &contacts,
-                               const std::vector<std::size_t> &active, const Domain &domain,
-                               double tol)
-    : bodies_(bodies), contacts_(contacts), active_(active), domain_(domain), tol_(tol)
+SoftRelaxation::SoftRelaxation(std::vector<Body> &bodies, const std::vector<std::size_t> &active,
+                               const Domain &domain, double tol)
+    : bodies_(bodies), active_(active), domain_(domain), tol_(tol)
 {
 }
 
@@ -24,8 +23,11 @@ void SoftRelaxation::size_lists()
 {
   if (near_.size() == bodies_.size()) return;
   double largest = 0;
-  for (const Body &b : bodies_)
+  largest_ = 0;
+  for (const Body &b : bodies_) {
     if (b.movable) largest = std::max(largest, b.R);
+    largest_ = std::max(largest_, b.R);
+  }
   skin_ = kSkin * largest;
   near_.assign(bodies_.size(), {});
   built_.assign(bodies_.size(), Vec3{});
@@ -64,16 +66,26 @@ double SoftRelaxation::forces(std::vector<Vec3> &f) const
 }
 
 // The neighbour lists of the active spheres: the present spheres within
-// the two radii and skin_ of them.
+// the two radii and skin_ of them that can touch them (can_touch), by
+// index; found in a cell grid of where the spheres are now
+// (a zone's possible contacts reach across the caps: many times more).
 void SoftRelaxation::build_near()
 {
+  CellGrid grid(2 * largest_ + skin_);
+  for (std::size_t k = 0; k < bodies_.size(); ++k)
+    if (bodies_[k].present) grid.insert(bodies_[k].x, static_cast<int>(k));
   for (std::size_t i : active_) {
     near_[i].clear();
     const Body &b = bodies_[i];
-    for (const Contact &c : contacts_[i]) {
-      const Body &o = bodies_[static_cast<std::size_t>(c.j)];
-      if (o.present && norm(b.x - o.x) < b.R + o.R + skin_) near_[i].push_back(c);
-    }
+    grid.for_each_near(b.x, b.R + largest_ + skin_, [&](int j) {
+      const Body &o = bodies_[static_cast<std::size_t>(j)];
+      if (static_cast<std::size_t>(j) == i || !(norm(b.x - o.x) < b.R + o.R + skin_) ||
+          !can_touch(b, o))
+        return;
+      near_[i].push_back({j, allowed_overlap(b, o)});
+    });
+    std::sort(near_[i].begin(), near_[i].end(),
+              [](const Contact &a, const Contact &c) { return a.j < c.j; });
     built_[i] = b.x;
   }
 }

@@ -16,10 +16,10 @@ namespace reinforce {
 
 class SoftRelaxation {
 public:
-  // Over `bodies` (those `active` move; `contacts` the pairs that can
-  // touch), inside `domain`; tol as in Settings.
-  SoftRelaxation(std::vector<Body> &bodies, const std::vector<std::vector<Contact>> &contacts,
-                 const std::vector<std::size_t> &active, const Domain &domain, double tol);
+  // Over `bodies` (those `active` move; each against the bodies it can
+  // touch, can_touch), inside `domain`; tol as in Settings.
+  SoftRelaxation(std::vector<Body> &bodies, const std::vector<std::size_t> &active,
+                 const Domain &domain, double tol);
 
   // The pull towards a sphere's bar, as a share of its radius times its
   // mobility (0: none).
@@ -32,12 +32,12 @@ public:
 
 private:
   std::vector<Body> &bodies_;
-  const std::vector<std::vector<Contact>> &contacts_;
   const std::vector<std::size_t> &active_;
   const Domain &domain_;
   double tol_;
   double pull_ = 0;
   double skin_ = 0;                           // of the neighbour lists
+  double largest_ = 0;                        // the largest radius of a body
   std::vector<std::vector<Contact>> near_;    // an active sphere's neighbours
   std::vector<Vec3> built_;                   // where it was when they were found
 
