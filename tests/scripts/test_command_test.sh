@@ -180,7 +180,7 @@ expect lammps_skipped_all_its_users 0 "$fake" bin_ok REINFORCE_SKIP=lammps \
   "REINFORCE_CMAKE_ARGS=-DFAKE_LIGGGHTS=ON -DFAKE_LAMMPS_USERS=ON" -- \
   '^  skipped: lammps tests: lammps_\*, stability_\*, bench_quick, quality_\*, liggghts_same_stats_as_lammps\* \(skipped on purpose: REINFORCE_SKIP=lammps\)' \
   '^  main: 2 tests, 2 passed, 0 failed \(liggghts 1, unit 1\)' '^total: 2 passed, 0 failed$' \
-  '!(stability|quality|liggghts_same_stats_as_lammps)_fake|bench_quick'
+  '!Test +#[0-9]+: ((stability|quality|liggghts_same_stats_as_lammps)_fake|bench_quick)'
 # 3. A family of tests short of its minimum fails the command, named (the
 # fake's unit test not registered; liggghts skipped, so that nothing else
 # fails).

@@ -5,6 +5,13 @@
 # split_lists parses the scripts' "-- A -- B -- C" arguments.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 work=$(mktemp -d "${TMPDIR:-/tmp}/${1:-test}.XXXXXX")
+# Open MPI's session directory of this test's runs inside it, not in the
+# /tmp/ompi.HOST.UID tree every mpirun on the machine shares: a run finishing
+# there removes the shared top directory when it looks empty, under another
+# run that is creating its own in it (that run stops at start-up with status
+# 1, before the host has written a line), and a run killed there leaves
+# files that a later run with the same job family (from its pid) meets.
+export OMPI_MCA_orte_tmpdir_base="$work"
 
 # show_runs: what the runs under $work printed (every file named log or
 # stdout: the host's log, a run's stdout and stderr), or that there is

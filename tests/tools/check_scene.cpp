@@ -7,7 +7,7 @@
 //
 //   check_scene --before B --after A [--rebar-type T[,T...]] [--tol 1e-6]
 //               [--overlap-tol 1e-12] [--rmin R] [--rmax R] [--deleted N] [--kept-ok]
-//               [--overlap-ok-before | --clean-before]
+//               [--overlap-ok-before | --clean-before] [--zone W]
 //               [--wall-plane PX PY PZ NX NY NZ]... [--wall-stl FILE]...
 //               [--wall-cylinder x|y|z C1 C2 R inside|outside]...
 //               [--inside-box XLO XHI YLO YHI ZLO ZHI]...
@@ -543,6 +543,7 @@ struct Options {
   double tol = 1e-6, rmin = 0, rmax = 0;
   double overlap_tol = 1e-12;    // for the pairs of a moved sphere (--overlap-tol)
   long deleted = -1;
+  double zone = 0;    // --zone W: moved non-targets start within W of a target (0: not checked)
   bool kept_ok = false, clean_before = false;
   std::vector<Wall> walls;
 };
@@ -734,6 +735,30 @@ int run_check(Options o)
     } else {
       ++moved_others;
     }
+  }
+
+  // The regrowth's zone (regrow W): a sphere it moves, not a target, has
+  // its centre within W of a seed's, and every seed is a target.
+  if (o.zone > 0) {
+    long checked = 0, beyond = 0;
+    double farthest = 0;
+    for (std::size_t i = 0; i < after.atoms.size(); ++i) {
+      const Atom *b = before.find(after.atoms[i].id);
+      if (!moved[i] || !b || is_rebar(b->type) || was_target[index_before(b)]) continue;
+      double nearest = INFINITY;
+      for (std::size_t t = 0; t < before.atoms.size(); ++t) {
+        if (!was_target[t]) continue;
+        double d[3];
+        before.delta(b->x, before.atoms[t].x, d);
+        nearest = std::min(nearest, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+      }
+      ++checked;
+      beyond += !(nearest < o.zone);
+      farthest = std::max(farthest, nearest);
+    }
+    check(beyond == 0, "moved spheres that were no target start within the zone, " + num(o.zone) +
+                           " of a target's centre (" + str(beyond) + " of " + str(checked) +
+                           " beyond; farthest " + num(farthest) + ")");
   }
 
   // Kept targets: matrix spheres left in place that overlap a bar.
@@ -1046,6 +1071,8 @@ int main(int argc, char **argv)
       o.rmax = to_double(next(), k);
     else if (k == "--deleted")
       o.deleted = to_long(next(), k);
+    else if (k == "--zone")
+      o.zone = to_double(next(), k);
     else if (k == "--kept-ok")
       o.kept_ok = true;
     else if (k == "--overlap-ok-before")
@@ -1067,7 +1094,7 @@ int main(int argc, char **argv)
       grid_scale = to_double(next(), k);
     else if (k == "-h" || k == "--help") {
       std::printf("usage: check_scene --before B --after A [--rebar-type 2[,3...]] [--tol 1e-6]\n"
-                  "                   [--rmin R --rmax R] [--deleted N] [--kept-ok]\n"
+                  "                   [--rmin R --rmax R] [--deleted N] [--kept-ok] [--zone W]\n"
                   "                   [--overlap-ok-before | --clean-before]\n"
                   "                   [--wall-plane PX PY PZ NX NY NZ]... [--wall-stl FILE]...\n"
                   "                   [--wall-cylinder x|y|z C1 C2 R inside|outside]...\n"
