@@ -128,12 +128,16 @@ for ((k = 0; k < ${#host_exe[@]}; k += 2)); do
   h=${host_exe[k]} exe=$REINFORCE_BUILD/${host_exe[k + 1]}
   why=$(skip_reason "$h")
   if [ -n "$why" ]; then
-    skipped+=("$h tests (skipped on purpose: $why)")
-    exclude+=("^${h}_")
     # the stability and quality tests, the benchmark's quick case and the
     # LIGGGHTS-against-LAMMPS comparisons run lmp_reinforce too (their
-    # families in test_families.txt name the host lammps)
-    [ "$h" = lammps ] && exclude+=("^stability_" "^bench_quick$" "^quality_" "^liggghts_same_stats_as_lammps")
+    # families in test_families.txt name the host lammps): left out with
+    # it, and named in the summary
+    also=()
+    [ "$h" = lammps ] && also=("^stability_" "^bench_quick$" "^quality_" "^liggghts_same_stats_as_lammps")
+    exclude+=("^${h}_" "${also[@]}")
+    names=$(printf '%s\n' "^${h}_" "${also[@]}" | sed -E 's/^\^//; s/([^$])$/\1*/; s/\$$//' | paste -sd, - |
+              sed 's/,/, /g')
+    skipped+=("$h tests: $names (skipped on purpose: $why)")
     continue
   fi
   H=$(upper "$h")

@@ -28,7 +28,7 @@
 #include <cstring>
 
 using namespace LAMMPS_NS;
-using namespace reinforce::host_flags;
+using Mark = reinforce::PendingFlags;
 
 ReinforceFixBase::ReinforceFixBase(LAMMPS *lmp, int narg, char **arg)
     : Fix(lmp, narg, arg), parsed(new reinforce::FixOptions), options(*parsed),
@@ -252,16 +252,15 @@ void ReinforceFixBase::post_run()
 
 void ReinforceFixBase::invoke()
 {
-  if (static_cast<int>(pending.size()) < atom->nmax) grow_arrays(atom->nmax);
+  pending.grow(atom->nmax);
   // Atoms created since the last invocation carry no flag yet.
-  std::fill(pending.begin(), pending.end(), kPresent);
+  pending.clear();
   if (region) region->prematch();
   check_bodies();
   check_walls();
   find_anchors();
 
-  Host host(*this);
-  find_other_rebar(host.frozen_bits, host.frozen_by);
+  FixHost host(host_view());
   const reinforce::Totals t = reinforce::run_invocation(host, options);
   warn_anchors();
 
@@ -277,9 +276,39 @@ void ReinforceFixBase::invoke()
       atom->map_set();
     }
   }
-  std::fill(pending.begin(), pending.end(), kPresent);
+  pending.clear();
   const auto out = reinforce::output_vector(t);
   totals.assign(out.begin(), out.end());
+}
+
+// What the engine's host needs of this fix, and no more.
+FixHostView ReinforceFixBase::host_view()
+{
+  FixHostView v;
+  v.atom = atom;
+  v.comm = comm;
+  v.domain = domain;
+  v.fix = this;
+  v.world = world;
+  v.pending = &pending;
+  v.region = region;
+  v.group_bit = groupbit;
+  v.rebar_bit = rebar_bit;
+  find_other_rebar(v.frozen_bits, v.frozen_by);
+  v.ghost_reach = [this](int d) { return ghost_reach(d); };
+  v.ghost_cutoff_for = [this](double reach) { return ghost_cutoff_for(reach); };
+  v.ghost_cutoff_restored = [this] { ghost_cutoff_restored(); };
+  v.walls_in_view = [this] { return walls_in_view(); };
+  v.build_neighbour_lists = [this](double cutoff) { return build_neighbour_lists(cutoff); };
+  v.neighbours = [this](int local, std::vector<int> &out) { neighbours(local, out); };
+  v.moved = [this](int i) {
+    for (Anchors &a : anchors)
+      if (atom->mask[i] & a.bit) a.moved.insert(atom->tag[i]);
+  };
+  v.log = [this](const std::string &line) { log(line); };
+  v.warn = [this](const std::string &message) { warn(message); };
+  v.fail = [this](const std::string &message) { fail(FLERR, message); };
+  return v;
 }
 
 double ReinforceFixBase::compute_vector(int n)
@@ -340,7 +369,7 @@ void ReinforceFixBase::neighbours(int, std::vector<int> &out)
 
 void ReinforceFixBase::grow_arrays(int nmax)
 {
-  if (static_cast<int>(pending.size()) < nmax) pending.resize(nmax, kPresent);
+  pending.grow(nmax);
 }
 
 void ReinforceFixBase::copy_arrays(int i, int j, int)
@@ -350,7 +379,7 @@ void ReinforceFixBase::copy_arrays(int i, int j, int)
 
 void ReinforceFixBase::set_arrays(int i)
 {
-  pending[i] = kPresent;
+  pending[i] = Mark::kPresent;
 }
 
 int ReinforceFixBase::pack_exchange(int i, double *buf)
@@ -377,5 +406,5 @@ void ReinforceFixBase::unpack_pending(int n, int first, const double *buf)
 
 double ReinforceFixBase::memory_usage()
 {
-  return static_cast<double>(pending.capacity() * sizeof(int));
+  return static_cast<double>(pending.bytes());
 }

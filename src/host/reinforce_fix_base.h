@@ -17,6 +17,8 @@
 
 #include "fix.h"
 
+#include "reinforce_pending_flags.h"
+
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -31,6 +33,7 @@ class Boundaries;
 namespace LAMMPS_NS {
 
 class Region;
+struct FixHostView;
 
 class ReinforceFixBase : public Fix {
 public:
@@ -51,9 +54,6 @@ public:
   int pack_exchange(int, double *) override;
   int unpack_exchange(int, double *) override;
   double memory_usage() override;
-
-  class Host;    // reinforce::HostHooks on the host's atoms and communication
-  friend class Host;
 
 protected:
   // The checks every host makes at the fix command and at each init():
@@ -98,7 +98,7 @@ protected:
 
 private:
   class Region *region = nullptr;
-  std::vector<int> pending;
+  reinforce::PendingFlags pending;
   bool invoked = false;          // the relocation at the start of the first run is done
   bool setup_seen = false;       // setup_pre_exchange ran in this run's setup
   std::vector<double> totals;    // f_ID[1..], the latest invocation
@@ -112,6 +112,7 @@ private:
   std::vector<Anchors> anchors;
 
   void invoke();
+  FixHostView host_view();
   bool shares_matrix_atoms(const Fix &other);
   void check_bodies();
   void check_walls();

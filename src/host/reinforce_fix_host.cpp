@@ -5,7 +5,6 @@
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
-#include "error.h"
 #include "region.h"
 
 #include "reinforce_host_api.h"
@@ -22,9 +21,10 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <utility>
 
 using namespace LAMMPS_NS;
-using namespace reinforce::host_flags;
+using Mark = reinforce::PendingFlags;
 
 namespace {
 
@@ -40,16 +40,18 @@ namespace {
 
 }    // namespace
 
-ReinforceFixBase::Host::Host(ReinforceFixBase &fix) : MpiHooks(fix.world), f(fix) {}
+FixHost::FixHost(FixHostView view) : MpiHooks(view.world), v(std::move(view)), pending(*v.pending)
+{
+}
 
 // The refresh the hosts' Monte Carlo fixes do inside pre_exchange, plus
 // comm->setup(): at setup_pre_exchange of the first run it has not been
 // called yet, and it also applies a changed ghost cutoff.
-void ReinforceFixBase::Host::refresh()
+void FixHost::refresh()
 {
-  f.domain->pbc();
-  f.domain->reset_box();
-  f.comm->setup();
+  v.domain->pbc();
+  v.domain->reset_box();
+  v.comm->setup();
 #if !REINFORCE_HOST_COPIES_ATOMS
   // comm->exchange() runs AtomVec::copy for every atom that leaves the
   // subdomain, and with one process in a dimension drops it; with more,
@@ -59,19 +61,19 @@ void ReinforceFixBase::Host::refresh()
   // must not run in between: it would try to wrap it). Copying the rows of
   // atom->peratom instead is not safe there: some registered pointers are
   // never initialised (atom->vest_temp).
-  for (int i = 0; i < f.atom->nlocal; ++i)
-    if (f.pending[i] == kDoomed) f.atom->x[i][0] = std::numeric_limits<double>::max();
+  for (int i = 0; i < v.atom->nlocal; ++i)
+    if (pending[i] == Mark::kDoomed) v.atom->x[i][0] = std::numeric_limits<double>::max();
 #endif
-  f.comm->exchange();
-  f.atom->nghost = 0;
-  f.comm->borders();
+  v.comm->exchange();
+  v.atom->nghost = 0;
+  v.comm->borders();
   forward_pending();
 }
 
-reinforce::AtomArrays ReinforceFixBase::Host::atoms()
+reinforce::AtomArrays FixHost::atoms()
 {
-  Atom *atom = f.atom;
-  if (static_cast<int>(f.pending.size()) < atom->nmax) f.grow_arrays(atom->nmax);
+  Atom *atom = v.atom;
+  pending.grow(atom->nmax);
   reinforce::AtomArrays a;
   a.nlocal = atom->nlocal;
   a.nall = atom->nlocal + atom->nghost;
@@ -79,38 +81,38 @@ reinforce::AtomArrays ReinforceFixBase::Host::atoms()
   a.radius = atom->radius;
   view_tags(a, atom->tag);
   a.mask = atom->mask;
-  a.pending = f.pending.data();
-  a.group_bit = f.groupbit;
-  a.rebar_bit = f.rebar_bit;
-  a.frozen_bits = frozen_bits;
-  a.frozen_by = frozen_by;
+  a.pending = pending.data();
+  a.group_bit = v.group_bit;
+  a.rebar_bit = v.rebar_bit;
+  a.frozen_bits = v.frozen_bits;
+  a.frozen_by = v.frozen_by;
   return a;
 }
 
-void ReinforceFixBase::Host::set_pending(int local, bool flag)
+void FixHost::set_pending(int local, bool flag)
 {
-  f.pending[local] = flag ? kPending : kPresent;
+  pending[local] = flag ? Mark::kPending : Mark::kPresent;
 }
 
 // Also with one process: periodic images are ghosts too.
-void ReinforceFixBase::Host::forward_pending()
+void FixHost::forward_pending()
 {
-  reinforce::host_api::forward_comm(f.comm, &f, 0);
+  reinforce::host_api::forward_comm(v.comm, v.fix, 0);
 }
 
-double ReinforceFixBase::Host::ghost_reach() const
+double FixHost::ghost_reach() const
 {
-  return std::min({f.ghost_reach(0), f.ghost_reach(1), f.ghost_reach(2)});
+  return std::min({v.ghost_reach(0), v.ghost_reach(1), v.ghost_reach(2)});
 }
 
-reinforce::GhostCutoff ReinforceFixBase::Host::ensure_ghost_cutoff(double reach)
+reinforce::GhostCutoff FixHost::ensure_ghost_cutoff(double reach)
 {
   reinforce::GhostCutoff g;
   g.before = g.after = ghost_reach();
   if (g.before >= reach) return g;
   // A second raise (the regrowth) restores the user's value too.
-  if (!raised) saved_cutghostuser = f.comm->cutghostuser;
-  f.comm->cutghostuser = f.ghost_cutoff_for(reach);
+  if (!raised) saved_cutghostuser = v.comm->cutghostuser;
+  v.comm->cutghostuser = v.ghost_cutoff_for(reach);
   raised = true;
   refresh();    // comm->setup() with the new cutoff, then the ghosts again
   g.after = ghost_reach();
@@ -118,25 +120,25 @@ reinforce::GhostCutoff ReinforceFixBase::Host::ensure_ghost_cutoff(double reach)
   return g;
 }
 
-void ReinforceFixBase::Host::restore_ghost_cutoff()
+void FixHost::restore_ghost_cutoff()
 {
   if (!raised) return;
   raised = false;
-  f.comm->cutghostuser = saved_cutghostuser;
-  f.comm->setup();
-  f.ghost_cutoff_restored();
+  v.comm->cutghostuser = saved_cutghostuser;
+  v.comm->setup();
+  v.ghost_cutoff_restored();
 }
 
-reinforce::Domain ReinforceFixBase::Host::placement_domain()
+reinforce::Domain FixHost::placement_domain()
 {
-  Domain *domain = f.domain;
+  Domain *domain = v.domain;
   reinforce::Domain d;
   for (int k = 0; k < 3; ++k) {
     d.lo[k] = domain->boxlo[k];
     d.hi[k] = domain->boxhi[k];
     d.periodic[k] = domain->periodicity[k] != 0;
-    d.view_lo[k] = domain->sublo[k] - f.ghost_reach(k);
-    d.view_hi[k] = domain->subhi[k] + f.ghost_reach(k);
+    d.view_lo[k] = domain->sublo[k] - v.ghost_reach(k);
+    d.view_hi[k] = domain->subhi[k] + v.ghost_reach(k);
     d.sub_lo[k] = domain->sublo[k];
     d.sub_hi[k] = domain->subhi[k];
   }
@@ -144,17 +146,17 @@ reinforce::Domain ReinforceFixBase::Host::placement_domain()
   // region lies within r of it (Region::surface, as fix wall/region finds
   // its contacts; for side out it measures to the excluded body). A moving
   // region was set for this step by prematch() in invoke().
-  if (Region *region = f.region)
+  if (Region *region = v.region)
     d.region = [region](const reinforce::Vec3 &x, double r) {
       return region->match(x.x, x.y, x.z) != 0 && region->surface(x.x, x.y, x.z, r) == 0;
     };
-  d.walls = f.walls_in_view();
+  d.walls = v.walls_in_view();
   return d;
 }
 
-void ReinforceFixBase::Host::move(int i, reinforce::Vec3 x, double r)
+void FixHost::move(int i, reinforce::Vec3 x, double r)
 {
-  Atom *atom = f.atom;
+  Atom *atom = v.atom;
   const double scale = r / atom->radius[i];
   for (int k = 0; k < 3; ++k) {
     atom->x[i][k] = x[k];
@@ -163,9 +165,8 @@ void ReinforceFixBase::Host::move(int i, reinforce::Vec3 x, double r)
   }
   atom->radius[i] = r;
   atom->rmass[i] *= scale * scale * scale;    // the material density is kept
-  f.pending[i] = kPresent;
-  for (Anchors &a : f.anchors)
-    if (atom->mask[i] & a.bit) a.moved.insert(atom->tag[i]);
+  pending[i] = Mark::kPresent;
+  v.moved(i);
 }
 
 #if REINFORCE_HOST_COPIES_ATOMS
@@ -174,25 +175,20 @@ void ReinforceFixBase::Host::move(int i, reinforce::Vec3 x, double r)
 // index first, so a moved atom is never one still to be removed. Ghosts
 // are stale until the refresh that follows every round (collective), and
 // nothing looks at them before it.
-void ReinforceFixBase::Host::remove(std::vector<int> &locals)
+void FixHost::remove(std::vector<int> &locals)
 {
   std::sort(locals.rbegin(), locals.rend());
   for (int i : locals) {
-    f.atom->avec->copy(f.atom->nlocal - 1, i, 1);
-    f.atom->nlocal--;
+    v.atom->avec->copy(v.atom->nlocal - 1, i, 1);
+    v.atom->nlocal--;
   }
 }
 #else
 // Only the processes of one round call this, so the atoms are only marked
 // here; the next refresh (collective) deletes them. Until then nothing
 // looks at them, and afterwards they are gone from every view.
-void ReinforceFixBase::Host::remove(std::vector<int> &locals)
+void FixHost::remove(std::vector<int> &locals)
 {
-  for (int i : locals) f.pending[i] = kDoomed;
+  for (int i : locals) pending[i] = Mark::kDoomed;
 }
 #endif
-
-void ReinforceFixBase::Host::fail(const std::string &message)
-{
-  f.fail(FLERR, message);
-}

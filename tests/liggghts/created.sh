@@ -6,8 +6,7 @@
 set -euo pipefail
 build=$1
 here=$(cd "$(dirname "$0")" && pwd)
-work=$(mktemp -d "${TMPDIR:-/tmp}/liggghts_created.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+. "$(dirname "${BASH_SOURCE[0]}")/../scripts/test_env.sh" "liggghts_created"
 fix="fix r all reinforce/invert 0 bars radius 0.004 0.01"
 mkdir -p "$work/early" "$work/late"
 (cd "$here" && "$build/src/liggghts/liggghts_reinforce" -in in.created -var out "$work/early" \

@@ -51,10 +51,12 @@ status=0
   --boundary $bx $by $bz --quiet-profile "$@" | tee "$work/quality" || status=$?
 if [ -n "${QUALITY_REMOVED_MAX:-}" ]; then
   removed=$(grep '^QUALITY' "$work/quality" | tr ' ' '\n' | sed -n 's/^removed_ratio=//p')
-  if awk -v r="$removed" -v m="$QUALITY_REMOVED_MAX" 'BEGIN {exit !(r + 0 <= m + 0)}'; then
+  # A missing or unreadable figure fails (awk takes "" as 0).
+  if awk -v r="$removed" -v m="$QUALITY_REMOVED_MAX" \
+       'BEGIN {exit !(r ~ /^[0-9.]+([eE][-+]?[0-9]+)?$/ && r + 0 <= m + 0)}'; then
     echo "PASS: removed ratio $removed <= $QUALITY_REMOVED_MAX"
   else
-    echo "FAIL: removed ratio $removed > $QUALITY_REMOVED_MAX"
+    echo "FAIL: removed ratio ${removed:-(missing)} not <= $QUALITY_REMOVED_MAX"
     status=1
   fi
 fi

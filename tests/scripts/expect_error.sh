@@ -17,6 +17,12 @@ launch=(mpirun -np "$np")
 (cd "$(dirname "$input")" && timeout 120 "${launch[@]}" "$exe" -in "$input" -log "$work/log" \
    -screen none -var out "$work" "$@") >"$work/stdout" 2>&1
 status=$?
+if [ ! -e "$work/log" ]; then
+  # The host never started (mpirun or MPI_Init failed): its stdout and
+  # stderr say why (test_env.sh prints them on the way out).
+  echo "FAIL: exit $status before the host wrote its log: the run did not start"
+  exit 1
+fi
 errors=$(grep -c '^ERROR' "$work/log" || true)
 line=$(grep '^ERROR' "$work/log" | head -1)
 echo "exit $status: $line"

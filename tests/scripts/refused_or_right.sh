@@ -19,7 +19,7 @@ make=("${list_a[@]}") vars=("${list_b[@]}")
 launch=(mpirun -np "$np")
 [ "$np" -eq 1 ] && launch=()
 (cd "$here/../lammps" && timeout 120 "${launch[@]}" "$build/src/lammps/lmp_reinforce" -in in.scene \
-   -var data "$work/scene.data" -var out "$work" -log "$work/log" -screen none "${vars[@]}") >/dev/null 2>&1
+   -var data "$work/scene.data" -var out "$work" -log "$work/log" -screen none "${vars[@]}") >"$work/stdout" 2>&1
 status=$?
 grep '^fix reinforce/invert: [0-9]' "$work/log" | head -1
 if [ "$status" -ne 0 ]; then

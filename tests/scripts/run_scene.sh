@@ -25,6 +25,8 @@
 #   print "ATOMS $(atoms)"          LAMMPS's atom count = atoms in after.dump
 #   print "PUSHED f13+f21"          spheres moved to make room: pushed (f_ID[13])
 #                                   or moved by the regrowth (f_ID[21])
+#   print "PUSHES f13"              the relocation's pushes alone: printed (the
+#                                   push tests match it)
 #   print "ONCE f1 f2 f3 f4"        after a second run with the same N = 0 fix:
 #                                   same totals, no second summary line
 #   print "AGAIN t r d k atoms"     a fresh fix afterwards: its targets are
@@ -78,6 +80,7 @@ summaries=$(grep -c '^fix reinforce/invert: [0-9]' "$log" || true)
 [ "$summaries" -ge 1 ] || fail "no summary line"
 echo "$name np=$np: targets $targets relocated $relocated deleted $deleted kept $kept"
 last STATS "$log"
+last PUSHES "$log"
 grep '^fix reinforce/invert: regrowth:' "$log" | tail -1 || true
 [ "$targets" -eq $((relocated + deleted + kept)) ] || fail "targets != relocated + deleted + kept"
 

@@ -20,8 +20,7 @@ if [ "${1:-}" = "--extra" ]; then
   shift 2
 fi
 here=$(cd "$(dirname "$0")/.." && pwd)
-work=$(mktemp -d "${TMPDIR:-/tmp}/same_stats.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+. "$(dirname "${BASH_SOURCE[0]}")/test_env.sh" "same_stats"
 "$build/tests/make_scene" "$work/scene.data" "$@"
 mkdir -p "$work/lammps" "$work/liggghts"
 (cd "$here/stability" && "$build/src/lammps/lmp_reinforce" -in in.scene -var data "$work/scene.data" \

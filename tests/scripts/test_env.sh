@@ -5,7 +5,34 @@
 # split_lists parses the scripts' "-- A -- B -- C" arguments.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 work=$(mktemp -d "${TMPDIR:-/tmp}/${1:-test}.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+# Open MPI's session directory of this test's runs inside it, not in the
+# /tmp/ompi.HOST.UID tree every mpirun on the machine shares: a run finishing
+# there removes the shared top directory when it looks empty, under another
+# run that is creating its own in it (that run stops at start-up with status
+# 1, before the host has written a line), and a run killed there leaves
+# files that a later run with the same job family (from its pid) meets.
+export OMPI_MCA_orte_tmpdir_base="$work"
+
+# show_runs: what the runs under $work printed (every file named log or
+# stdout: the host's log, a run's stdout and stderr), or that there is
+# none. On a failing exit it comes before the directory is removed, so a
+# failed test says why even when the failure was a run that stopped early.
+show_runs() {
+  local files f
+  files=$(find "$work" -type f \( -name log -o -name stdout \) 2>/dev/null | sort)
+  grep -q '/log$' <<<"$files" || echo "---- no host log was written under $work"
+  grep -q '/stdout$' <<<"$files" || echo "---- no run's stdout was kept under $work (printed above, if any)"
+  while read -r f; do
+    [ -n "$f" ] || continue
+    if [ -s "$f" ]; then
+      echo "---- ${f#"$work"/} (its last 60 lines):"
+      tail -n 60 "$f"
+    else
+      echo "---- ${f#"$work"/}: empty"
+    fi
+  done <<<"$files"
+}
+trap 'status=$?; [ "$status" -eq 0 ] || show_runs; rm -rf "$work"; exit "$status"' EXIT
 
 # split_lists -- A... -- B... -- C...: the three lists as the arrays
 # list_a, list_b and list_c (a missing one empty).

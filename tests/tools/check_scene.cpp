@@ -7,7 +7,7 @@
 //
 //   check_scene --before B --after A [--rebar-type T[,T...]] [--tol 1e-6]
 //               [--overlap-tol 1e-12] [--rmin R] [--rmax R] [--deleted N] [--kept-ok]
-//               [--overlap-ok-before | --clean-before]
+//               [--overlap-ok-before | --clean-before] [--zone W]
 //               [--wall-plane PX PY PZ NX NY NZ]... [--wall-stl FILE]...
 //               [--wall-cylinder x|y|z C1 C2 R inside|outside]...
 //               [--inside-box XLO XHI YLO YHI ZLO ZHI]...
@@ -28,9 +28,11 @@
 // periodic dimensions, "pp" in the BOX BOUNDS line); a pair overlaps when
 // d > tol * min(r_i, r_j), a pair of a moved sphere when d > overlap-tol *
 // min(r_i, r_j) (the fix leaves them exact but for rounding) beyond what
-// the pair overlapped before (a pair of matrix spheres, or a matrix sphere
-// within tol of a bar: the packing's own). Exit status: 0 every check
-// passed, 1 a check failed, 2 bad usage or unreadable input.
+// the pair overlapped before, when neither sphere was a target (a pair of
+// matrix spheres, or a matrix sphere within tol of a bar: the packing's
+// own). The last line, "DONE: N checks failed", follows every check.
+// Exit status: 0 every check passed, 1 a check failed, 2 bad usage or
+// unreadable input.
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -541,6 +543,7 @@ struct Options {
   double tol = 1e-6, rmin = 0, rmax = 0;
   double overlap_tol = 1e-12;    // for the pairs of a moved sphere (--overlap-tol)
   long deleted = -1;
+  double zone = 0;    // --zone W: moved non-targets start within W of a target (0: not checked)
   bool kept_ok = false, clean_before = false;
   std::vector<Wall> walls;
 };
@@ -711,6 +714,9 @@ int run_check(Options o)
     if (is_rebar(a.type) == is_rebar(b.type) || ov <= o.tol * std::min(a.r, b.r)) return;
     was_target[is_rebar(a.type) ? j : i] = 1;
   });
+  auto index_before = [&](const Atom *b) {
+    return static_cast<std::size_t>(b - before.atoms.data());
+  };
   long moved_targets = 0, moved_others = 0;
   double volume_targets_before = 0, volume_relocated_after = 0;
   auto ball = [](double r) { return 4.0 / 3.0 * 3.14159265358979323846 * r * r * r; };
@@ -721,7 +727,7 @@ int run_check(Options o)
     if (!moved[i]) continue;
     const Atom &a = after.atoms[i];
     const Atom *b = before.find(a.id);
-    const bool target = b && was_target[static_cast<std::size_t>(b - before.atoms.data())];
+    const bool target = b && was_target[index_before(b)];
     if (target) {
       ++moved_targets;
       volume_targets_before += ball(b->r);
@@ -729,6 +735,30 @@ int run_check(Options o)
     } else {
       ++moved_others;
     }
+  }
+
+  // The regrowth's zone (regrow W): a sphere it moves, not a target, has
+  // its centre within W of a seed's, and every seed is a target.
+  if (o.zone > 0) {
+    long checked = 0, beyond = 0;
+    double farthest = 0;
+    for (std::size_t i = 0; i < after.atoms.size(); ++i) {
+      const Atom *b = before.find(after.atoms[i].id);
+      if (!moved[i] || !b || is_rebar(b->type) || was_target[index_before(b)]) continue;
+      double nearest = INFINITY;
+      for (std::size_t t = 0; t < before.atoms.size(); ++t) {
+        if (!was_target[t]) continue;
+        double d[3];
+        before.delta(b->x, before.atoms[t].x, d);
+        nearest = std::min(nearest, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+      }
+      ++checked;
+      beyond += !(nearest < o.zone);
+      farthest = std::max(farthest, nearest);
+    }
+    check(beyond == 0, "moved spheres that were no target start within the zone, " + num(o.zone) +
+                           " of a target's centre (" + str(beyond) + " of " + str(checked) +
+                           " beyond; farthest " + num(farthest) + ")");
   }
 
   // Kept targets: matrix spheres left in place that overlap a bar.
@@ -754,15 +784,17 @@ int run_check(Options o)
     if (ra && rb) return;    // bars may be clumps of overlapping spheres
     worst_all = std::max(worst_all, ov / rmin);
     if (moved[i] || moved[j]) {
-      // A pair that overlapped before, at the same radii: what it had is
-      // the packing's own (a DEM-settled packing has one at every contact,
-      // a matrix sphere may touch a bar within tol without being a target);
-      // only what a move adds to it is the fix's.
+      // A pair that overlapped before, at the same radii, neither sphere a
+      // target: what it had is the packing's own (a DEM-settled packing has
+      // one at every contact, a matrix sphere may touch a bar within tol
+      // without being a target); only what a move adds to it is the fix's.
+      // A relocated target owns no old contact: the engine places it clear
+      // of every present sphere.
       const Atom *pa = before.find(a.id), *pb = before.find(b.id);
-      if (pa && pb && pa->r == a.r && pb->r == b.r) {
+      if (pa && pb && pa->r == a.r && pb->r == b.r && !was_target[index_before(pa)] &&
+          !was_target[index_before(pb)]) {
         const double had = before.overlap(*pa, *pb);
-        const bool own = !ra && !rb ? had > 0 : had > 0 && had <= o.tol * std::min(a.r, b.r);
-        if (own) {
+        if (had > 0) {
           ++own_pairs;
           worst_own = std::max(worst_own, had / rmin);
           ov -= had;
@@ -814,9 +846,10 @@ int run_check(Options o)
   std::printf("INFO: %ld overlapping pairs of unmoved matrix spheres were there before (the "
               "packing's own, not checked; largest %s of rmin)\n",
               packing_pairs, num(worst_packing).c_str());
-  std::printf("INFO: %ld pairs with a moved matrix sphere overlapped before (the packing's own, "
-              "largest %s of rmin): only what they overlap beyond it is checked\n",
-              own_pairs, num(worst_own).c_str());
+  std::printf(
+      "INFO: %ld pairs with a moved matrix sphere overlapped before (the packing's own, "
+      "neither a target; largest %s of rmin): only what they overlap beyond it is checked\n",
+      own_pairs, num(worst_own).c_str());
 
   // The packing given to the fix: its own matrix-matrix overlaps.
   long before_pairs = 0;
@@ -950,6 +983,9 @@ int run_check(Options o)
               nb, na, moved_count, deleted, kept_count, worst_moved, worst_all, worst_packing,
               worst_moved_kept, moved_targets, moved_others, volume_targets_before,
               volume_relocated_after, rmin);
+  // The closing line, after the last check: a test passes on it, not on a
+  // line printed part way.
+  std::printf("DONE: %d checks failed\n", failures);
   return failures ? 1 : 0;
 }
 
@@ -1035,6 +1071,8 @@ int main(int argc, char **argv)
       o.rmax = to_double(next(), k);
     else if (k == "--deleted")
       o.deleted = to_long(next(), k);
+    else if (k == "--zone")
+      o.zone = to_double(next(), k);
     else if (k == "--kept-ok")
       o.kept_ok = true;
     else if (k == "--overlap-ok-before")
@@ -1056,7 +1094,7 @@ int main(int argc, char **argv)
       grid_scale = to_double(next(), k);
     else if (k == "-h" || k == "--help") {
       std::printf("usage: check_scene --before B --after A [--rebar-type 2[,3...]] [--tol 1e-6]\n"
-                  "                   [--rmin R --rmax R] [--deleted N] [--kept-ok]\n"
+                  "                   [--rmin R --rmax R] [--deleted N] [--kept-ok] [--zone W]\n"
                   "                   [--overlap-ok-before | --clean-before]\n"
                   "                   [--wall-plane PX PY PZ NX NY NZ]... [--wall-stl FILE]...\n"
                   "                   [--wall-cylinder x|y|z C1 C2 R inside|outside]...\n"
