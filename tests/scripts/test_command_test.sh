@@ -94,7 +94,7 @@ EOF
 real=$w/real
 mkdir -p "$real/src"
 cp -r "$top/CMakeLists.txt" "$top/scripts" "$top/bench" "$real/"
-cp -r "$top/src/core" "$real/src/"
+cp -r "$top/src/core" "$top/src/layout" "$real/src/"
 first=$(sed -n 's|^ *\(src/core/[a-z_]*\.cpp\)$|\1|p; s|^add_library(reinforce_core STATIC *\(src/core/[a-z_]*\.cpp\).*|\1|p' \
         "$real/CMakeLists.txt" | head -1)
 [ -n "$first" ] || first=src/core/reinforce_tangent_sphere.cpp
