@@ -247,6 +247,25 @@ std::vector<RoundRecord> regrow_order_free(const std::vector<Particle> &reads,
   return a;
 }
 
+// What every regrowth of bar_in_lattice's `seeds` gives: finite records,
+// no push beyond the zone (0.3), every seed regrown or deleted, some
+// regrown, and no pair left overlapping.
+void expect_regrown_within_the_zone(const std::vector<Particle> &reads, std::size_t seeds,
+                                    const std::vector<RoundRecord> &records,
+                                    const RegrowthStats &stats)
+{
+  for (const RoundRecord &r : records) {
+    EXPECT_TRUE(is_finite(r.v));
+    if (r.kind == RecordKind::Pushed) {
+      EXPECT_LE(norm(r.v), 0.3);
+    }
+  }
+  EXPECT_EQ(stats.seeds, static_cast<std::int64_t>(seeds));
+  EXPECT_EQ(stats.regrown + stats.deleted, stats.seeds);
+  EXPECT_GT(stats.regrown, 0);
+  EXPECT_LE(largest_overlap_after(reads, records), kExact);
+}
+
 }    // namespace
 
 TEST(Regrowth, OrderFreeFiniteAndWithinTheZone)
@@ -256,16 +275,7 @@ TEST(Regrowth, OrderFreeFiniteAndWithinTheZone)
   ASSERT_GE(seeds.size(), 3u);
   RegrowthStats s1;
   const std::vector<RoundRecord> a = regrow_order_free(reads, seeds, settings_for(0.1), s1);
-  for (const RoundRecord &r : a) {
-    EXPECT_TRUE(is_finite(r.v));
-    if (r.kind == RecordKind::Pushed) {
-      EXPECT_LE(norm(r.v), 0.3);
-    }
-  }
-  EXPECT_EQ(s1.seeds, static_cast<std::int64_t>(seeds.size()));
-  EXPECT_EQ(s1.regrown + s1.deleted, s1.seeds);
-  EXPECT_GT(s1.regrown, 0);
-  EXPECT_LE(largest_overlap_after(reads, a), kExact);
+  expect_regrown_within_the_zone(reads, seeds.size(), a, s1);
 }
 
 // Grown together, the seeds of one zone give the same result in any order
@@ -278,18 +288,9 @@ TEST(Regrowth, TogetherOrderFreeExactAndWithinTheZone)
   const std::vector<Particle> reads = bar_in_lattice(seeds, 0.203);
   RegrowthStats s1;
   const std::vector<RoundRecord> a = regrow_order_free(reads, seeds, settings_for(0.1, true), s1);
-  for (const RoundRecord &r : a) {
-    EXPECT_TRUE(is_finite(r.v));
-    if (r.kind == RecordKind::Pushed) {
-      EXPECT_LE(norm(r.v), 0.3);
-    }
-  }
-  EXPECT_EQ(s1.seeds, static_cast<std::int64_t>(seeds.size()));
-  EXPECT_EQ(s1.regrown + s1.deleted, s1.seeds);
-  EXPECT_GT(s1.regrown, 0);
+  expect_regrown_within_the_zone(reads, seeds.size(), a, s1);
   EXPECT_GT(s1.deleted, s1.displaced);    // some given up, not only those inside the bars
   EXPECT_EQ(s1.inexact, 0);
-  EXPECT_LE(largest_overlap_after(reads, a), kExact);
 }
 
 // Grown together too, a seed with room goes back at its own radius, and

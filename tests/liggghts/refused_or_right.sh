@@ -19,11 +19,9 @@ make=("${list_a[@]}") vars=("${list_b[@]}")
 status=$?
 [ "$status" -ne 124 ] || { echo "FAIL: the run hung"; exit 1; }
 if [ "$status" -ne 0 ]; then
-  errors=$(grep -c '^ERROR' "$work/log" || true)
-  line=$(grep '^ERROR' "$work/log" | head -1)
+  read_errors "$work/log"
   echo "exit $status: $line"
   [ "$errors" -eq 1 ] || { echo "FAIL: $errors ERROR lines, expected one"; exit 1; }
-  message=$(sed -E 's/^ERROR: //; s/ \([^()]*:[0-9]+\)$//' <<<"$line")
   [ "$message" = "$refusal" ] || { echo "FAIL: the ERROR message is not exactly: $refusal"; exit 1; }
   echo "PASS $name np=$np: refused"
   exit 0

@@ -23,12 +23,10 @@ launch=(mpirun -np "$np")
 status=$?
 grep '^fix reinforce/invert: [0-9]' "$work/log" | head -1
 if [ "$status" -ne 0 ]; then
-  errors=$(grep -c '^ERROR' "$work/log" || true)
-  line=$(grep '^ERROR' "$work/log" | head -1)
+  read_errors "$work/log"
   echo "exit $status: $line"
   [ "$status" -ne 124 ] || { echo "FAIL: $name np=$np: the run hung"; exit 1; }
   [ "$errors" -eq 1 ] || { echo "FAIL: $name np=$np: $errors ERROR lines"; exit 1; }
-  message=$(sed -E 's/^ERROR: //; s/ \([^()]*:[0-9]+\)$//' <<<"$line")
   [ "$message" = "$refusal" ] ||
     { echo "FAIL: $name np=$np: the ERROR message is not exactly: $refusal"; exit 1; }
   [ ! -s "$work/after.dump" ] || ! grep -q '^ITEM:' "$work/after.dump" \

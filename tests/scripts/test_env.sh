@@ -2,7 +2,8 @@
 #   . "$(dirname "${BASH_SOURCE[0]}")/[../scripts/]test_env.sh" NAME
 # Open MPI may run as root and oversubscribe (2 cores, tests up to 8
 # processes); `work` is a fresh directory named after NAME, removed on exit;
-# split_lists parses the scripts' "-- A -- B -- C" arguments.
+# split_lists parses the scripts' "-- A -- B -- C" arguments; read_errors
+# reads a log's ERROR lines.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 work=$(mktemp -d "${TMPDIR:-/tmp}/${1:-test}.XXXXXX")
 # Open MPI's session directory of this test's runs inside it, not in the
@@ -44,4 +45,13 @@ split_lists() {
   while [ $# -gt 0 ] && [ "$1" != "--" ]; do list_b+=("$1"); shift; done
   [ $# -gt 0 ] && shift
   list_c=("$@")
+}
+
+# read_errors LOG: errors (how many ERROR lines LOG has), line (the first)
+# and message (that line but for "ERROR: " and the source location
+# "(file:line)", the text an exact-message check compares).
+read_errors() {
+  errors=$(grep -c '^ERROR' "$1" || true)
+  line=$(grep '^ERROR' "$1" | head -1 || true)
+  message=$(sed -E 's/^ERROR: //; s/ \([^()]*:[0-9]+\)$//' <<<"$line")
 }
