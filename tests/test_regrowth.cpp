@@ -91,6 +91,25 @@ std::vector<Particle> bar_and_target(std::vector<Particle> more = {})
   return reads;
 }
 
+// bar_and_target with the target caged: spheres that may not move (outside
+// the fix group: obstacles only) on the cubic lattice of its diameter
+// around it, wherever the bar leaves room.
+std::vector<Particle> caged_target()
+{
+  std::vector<Particle> reads = bar_and_target();
+  std::int64_t id = 10;
+  for (int i = -1; i <= 1; ++i)
+    for (int j = -1; j <= 1; ++j)
+      for (int k = -1; k <= 1; ++k) {
+        const Vec3 c = Vec3{0.15, 0, 0} + 0.2 * Vec3{double(i), double(j), double(k)};
+        if ((i == 0 && j == 0 && k == 0) || norm(c) < 0.2) continue;    // the target; the bar
+        Particle p = sphere(c, 0.1, id++, Role::Matrix);
+        p.pushable = false;
+        reads.push_back(p);
+      }
+  return reads;
+}
+
 // The regrowth of that target, in a zone of 0.3.
 std::vector<RoundRecord> regrow_target(const std::vector<Particle> &reads, const Domain &box,
                                        RegrowthStats &stats)
@@ -142,17 +161,7 @@ TEST(Regrowth, ZoneMovesAndStaysClear)
 // changes.
 TEST(Regrowth, SeedWithoutRoomIsDeletedAndTheZoneLeftAsItWas)
 {
-  std::vector<Particle> reads = bar_and_target();
-  std::int64_t id = 10;
-  for (int i = -1; i <= 1; ++i)
-    for (int j = -1; j <= 1; ++j)
-      for (int k = -1; k <= 1; ++k) {
-        const Vec3 c = Vec3{0.15, 0, 0} + 0.2 * Vec3{double(i), double(j), double(k)};
-        if ((i == 0 && j == 0 && k == 0) || norm(c) < 0.2) continue;    // the seed; the bar
-        Particle p = sphere(c, 0.1, id++, Role::Matrix);
-        p.pushable = false;    // outside the fix group: obstacles only
-        reads.push_back(p);
-      }
+  const std::vector<Particle> reads = caged_target();
   ASSERT_GE(reads.size(), 20u);
   RegrowthStats stats;
   const std::vector<RoundRecord> rec = regrow_target(reads, open_box(), stats);
@@ -305,17 +314,7 @@ TEST(Regrowth, TogetherPutsBackWhatHasRoomAndDeletesTheRest)
   EXPECT_EQ(rec[0].kind, RecordKind::Placed);
   EXPECT_EQ(rec[0].r, 0.1);
   EXPECT_LE(largest_overlap_after(roomy, rec), kExact);
-  std::vector<Particle> caged = bar_and_target();
-  std::int64_t id = 10;
-  for (int i = -1; i <= 1; ++i)
-    for (int j = -1; j <= 1; ++j)
-      for (int k = -1; k <= 1; ++k) {
-        const Vec3 c = Vec3{0.15, 0, 0} + 0.2 * Vec3{double(i), double(j), double(k)};
-        if ((i == 0 && j == 0 && k == 0) || norm(c) < 0.2) continue;
-        Particle p = sphere(c, 0.1, id++, Role::Matrix);
-        p.pushable = false;
-        caged.push_back(p);
-      }
+  const std::vector<Particle> caged = caged_target();
   RegrowthStats none;
   rec = regrow(caged, {1}, 0.3, settings_for(0.1, true), open_box(), none);
   ASSERT_EQ(rec.size(), 1u);
