@@ -10,16 +10,14 @@
 #   refused_or_right.sh NAME NP BUILD_DIR REFUSAL -- MAKE_SCENE_ARGS -- LMP_VARS -- CHECK_ARGS
 set -uo pipefail
 name=$1 np=$2 build=$3 refusal=$4
-shift 4
 here=$(cd "$(dirname "$0")" && pwd)
 . "$(dirname "${BASH_SOURCE[0]}")/test_env.sh" "refused_${name}"
-split_lists "$@"
-make=("${list_a[@]}") vars=("${list_b[@]}")
-"$build/tests/make_scene" "$work/scene.data" "${make[@]}" || exit 2
+split_lists "${@:5}"    # list_a: make_scene, list_b: host -var, list_c: check_scene
+"$build/tests/make_scene" "$work/scene.data" "${list_a[@]}" || exit 2
 launch=(mpirun -np "$np")
 [ "$np" -eq 1 ] && launch=()
 (cd "$here/../lammps" && timeout 120 "${launch[@]}" "$build/src/lammps/lmp_reinforce" -in in.scene \
-   -var data "$work/scene.data" -var out "$work" -log "$work/log" -screen none "${vars[@]}") >"$work/stdout" 2>&1
+   -var data "$work/scene.data" -var out "$work" -log "$work/log" -screen none "${list_b[@]}") >"$work/stdout" 2>&1
 status=$?
 grep '^fix reinforce/invert: [0-9]' "$work/log" | head -1
 if [ "$status" -ne 0 ]; then
