@@ -91,6 +91,25 @@ std::vector<Particle> bar_and_target(std::vector<Particle> more = {})
   return reads;
 }
 
+// bar_and_target with the target caged: spheres that may not move (outside
+// the fix group: obstacles only) on the cubic lattice of its diameter
+// around it, wherever the bar leaves room.
+std::vector<Particle> caged_target()
+{
+  std::vector<Particle> reads = bar_and_target();
+  std::int64_t id = 10;
+  for (int i = -1; i <= 1; ++i)
+    for (int j = -1; j <= 1; ++j)
+      for (int k = -1; k <= 1; ++k) {
+        const Vec3 c = Vec3{0.15, 0, 0} + 0.2 * Vec3{double(i), double(j), double(k)};
+        if ((i == 0 && j == 0 && k == 0) || norm(c) < 0.2) continue;    // the target; the bar
+        Particle p = sphere(c, 0.1, id++, Role::Matrix);
+        p.pushable = false;
+        reads.push_back(p);
+      }
+  return reads;
+}
+
 // The regrowth of that target, in a zone of 0.3.
 std::vector<RoundRecord> regrow_target(const std::vector<Particle> &reads, const Domain &box,
                                        RegrowthStats &stats)
@@ -142,17 +161,7 @@ TEST(Regrowth, ZoneMovesAndStaysClear)
 // changes.
 TEST(Regrowth, SeedWithoutRoomIsDeletedAndTheZoneLeftAsItWas)
 {
-  std::vector<Particle> reads = bar_and_target();
-  std::int64_t id = 10;
-  for (int i = -1; i <= 1; ++i)
-    for (int j = -1; j <= 1; ++j)
-      for (int k = -1; k <= 1; ++k) {
-        const Vec3 c = Vec3{0.15, 0, 0} + 0.2 * Vec3{double(i), double(j), double(k)};
-        if ((i == 0 && j == 0 && k == 0) || norm(c) < 0.2) continue;    // the seed; the bar
-        Particle p = sphere(c, 0.1, id++, Role::Matrix);
-        p.pushable = false;    // outside the fix group: obstacles only
-        reads.push_back(p);
-      }
+  const std::vector<Particle> reads = caged_target();
   ASSERT_GE(reads.size(), 20u);
   RegrowthStats stats;
   const std::vector<RoundRecord> rec = regrow_target(reads, open_box(), stats);
@@ -247,6 +256,25 @@ std::vector<RoundRecord> regrow_order_free(const std::vector<Particle> &reads,
   return a;
 }
 
+// What every regrowth of bar_in_lattice's `seeds` gives: finite records,
+// no push beyond the zone (0.3), every seed regrown or deleted, some
+// regrown, and no pair left overlapping.
+void expect_regrown_within_the_zone(const std::vector<Particle> &reads, std::size_t seeds,
+                                    const std::vector<RoundRecord> &records,
+                                    const RegrowthStats &stats)
+{
+  for (const RoundRecord &r : records) {
+    EXPECT_TRUE(is_finite(r.v));
+    if (r.kind == RecordKind::Pushed) {
+      EXPECT_LE(norm(r.v), 0.3);
+    }
+  }
+  EXPECT_EQ(stats.seeds, static_cast<std::int64_t>(seeds));
+  EXPECT_EQ(stats.regrown + stats.deleted, stats.seeds);
+  EXPECT_GT(stats.regrown, 0);
+  EXPECT_LE(largest_overlap_after(reads, records), kExact);
+}
+
 }    // namespace
 
 TEST(Regrowth, OrderFreeFiniteAndWithinTheZone)
@@ -256,16 +284,7 @@ TEST(Regrowth, OrderFreeFiniteAndWithinTheZone)
   ASSERT_GE(seeds.size(), 3u);
   RegrowthStats s1;
   const std::vector<RoundRecord> a = regrow_order_free(reads, seeds, settings_for(0.1), s1);
-  for (const RoundRecord &r : a) {
-    EXPECT_TRUE(is_finite(r.v));
-    if (r.kind == RecordKind::Pushed) {
-      EXPECT_LE(norm(r.v), 0.3);
-    }
-  }
-  EXPECT_EQ(s1.seeds, static_cast<std::int64_t>(seeds.size()));
-  EXPECT_EQ(s1.regrown + s1.deleted, s1.seeds);
-  EXPECT_GT(s1.regrown, 0);
-  EXPECT_LE(largest_overlap_after(reads, a), kExact);
+  expect_regrown_within_the_zone(reads, seeds.size(), a, s1);
 }
 
 // Grown together, the seeds of one zone give the same result in any order
@@ -278,18 +297,9 @@ TEST(Regrowth, TogetherOrderFreeExactAndWithinTheZone)
   const std::vector<Particle> reads = bar_in_lattice(seeds, 0.203);
   RegrowthStats s1;
   const std::vector<RoundRecord> a = regrow_order_free(reads, seeds, settings_for(0.1, true), s1);
-  for (const RoundRecord &r : a) {
-    EXPECT_TRUE(is_finite(r.v));
-    if (r.kind == RecordKind::Pushed) {
-      EXPECT_LE(norm(r.v), 0.3);
-    }
-  }
-  EXPECT_EQ(s1.seeds, static_cast<std::int64_t>(seeds.size()));
-  EXPECT_EQ(s1.regrown + s1.deleted, s1.seeds);
-  EXPECT_GT(s1.regrown, 0);
+  expect_regrown_within_the_zone(reads, seeds.size(), a, s1);
   EXPECT_GT(s1.deleted, s1.displaced);    // some given up, not only those inside the bars
   EXPECT_EQ(s1.inexact, 0);
-  EXPECT_LE(largest_overlap_after(reads, a), kExact);
 }
 
 // Grown together too, a seed with room goes back at its own radius, and
@@ -304,17 +314,7 @@ TEST(Regrowth, TogetherPutsBackWhatHasRoomAndDeletesTheRest)
   EXPECT_EQ(rec[0].kind, RecordKind::Placed);
   EXPECT_EQ(rec[0].r, 0.1);
   EXPECT_LE(largest_overlap_after(roomy, rec), kExact);
-  std::vector<Particle> caged = bar_and_target();
-  std::int64_t id = 10;
-  for (int i = -1; i <= 1; ++i)
-    for (int j = -1; j <= 1; ++j)
-      for (int k = -1; k <= 1; ++k) {
-        const Vec3 c = Vec3{0.15, 0, 0} + 0.2 * Vec3{double(i), double(j), double(k)};
-        if ((i == 0 && j == 0 && k == 0) || norm(c) < 0.2) continue;
-        Particle p = sphere(c, 0.1, id++, Role::Matrix);
-        p.pushable = false;
-        caged.push_back(p);
-      }
+  const std::vector<Particle> caged = caged_target();
   RegrowthStats none;
   rec = regrow(caged, {1}, 0.3, settings_for(0.1, true), open_box(), none);
   ASSERT_EQ(rec.size(), 1u);

@@ -83,8 +83,7 @@ case $case in
     "$checker" --before "$work/before.dump" --after "$work/after.dump" --rebar-type 2,3 \
       --deleted $((d1 + d2)) || fail "the checker failed (above)"
     for other in r2 r1; do
-      line=$(grep -E "^fix reinforce/invert: left alone [0-9]+ atoms that overlap the bars: they are rebar of fix $other\$" "$work/log" || true)
-      { [ -n "$line" ] && [ "$(grep -c . <<<"$line")" -eq 1 ]; } || { grep 'left alone' "$work/log" || true; fail "no (or several) line: left alone N atoms ... rebar of fix $other"; }
+      line=$(left_alone_line "$work/log" "$other") || fail "no (or several) line: left alone N atoms ... rebar of fix $other"
       n=$(awk '{print $5}' <<<"$line")
       [ "$n" -gt 0 ] || fail "left alone $n atoms"
       echo "PASS: $line"

@@ -9,8 +9,7 @@ set -euo pipefail
 build=$1 np=$2
 here=$(cd "$(dirname "$0")" && pwd)
 . "$(dirname "${BASH_SOURCE[0]}")/../scripts/test_env.sh" "liggghts_every"
-"$build/tests/make_scene" "$work/scene.data" --box 0 0.4 0 0.2 0 0.2 --radius 0.004 0.008 --fcc \
-  --bar 0.01 0.07 0.1 0.39 0.07 0.1 0.005 0.0075
+"$here/../scripts/every_scene.sh" "$build" "$work/scene.data"
 (cd "$here" && mpirun -np "$np" "$build/src/liggghts/liggghts_reinforce" -in in.every \
    -var data "$work/scene.data" -var out "$work" -log "$work/log" -screen none) ||
   { echo "FAIL: liggghts_reinforce exited non-zero"; tail -5 "$work/log"; exit 1; }

@@ -7,23 +7,19 @@
 #   refused_or_right.sh NAME NP BUILD_DIR REFUSAL -- MAKE_SCENE_ARGS -- LIGGGHTS_VARS -- CHECK_SCENE_ARGS
 set -uo pipefail
 name=$1 np=$2 build=$3 refusal=$4
-shift 4
 here=$(cd "$(dirname "$0")" && pwd)
 . "$(dirname "${BASH_SOURCE[0]}")/../scripts/test_env.sh" "liggghts_${name}"
-split_lists "$@"
-make=("${list_a[@]}") vars=("${list_b[@]}")
-"$build/tests/make_scene" "$work/scene.data" "${make[@]}" || { echo "FAIL: make_scene"; exit 1; }
+split_lists "${@:5}"    # list_a: make_scene, list_b: host -var, list_c: check_scene
+"$build/tests/make_scene" "$work/scene.data" "${list_a[@]}" || { echo "FAIL: make_scene"; exit 1; }
 (cd "$here" && timeout 120 mpirun -np "$np" "$build/src/liggghts/liggghts_reinforce" -in in.scene \
-   -var data "$work/scene.data" -var out "$work" -log "$work/log" -screen none "${vars[@]}") \
+   -var data "$work/scene.data" -var out "$work" -log "$work/log" -screen none "${list_b[@]}") \
   >"$work/stdout" 2>&1
 status=$?
 [ "$status" -ne 124 ] || { echo "FAIL: the run hung"; exit 1; }
 if [ "$status" -ne 0 ]; then
-  errors=$(grep -c '^ERROR' "$work/log" || true)
-  line=$(grep '^ERROR' "$work/log" | head -1)
+  read_errors "$work/log"
   echo "exit $status: $line"
   [ "$errors" -eq 1 ] || { echo "FAIL: $errors ERROR lines, expected one"; exit 1; }
-  message=$(sed -E 's/^ERROR: //; s/ \([^()]*:[0-9]+\)$//' <<<"$line")
   [ "$message" = "$refusal" ] || { echo "FAIL: the ERROR message is not exactly: $refusal"; exit 1; }
   echo "PASS $name np=$np: refused"
   exit 0

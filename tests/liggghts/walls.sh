@@ -40,7 +40,7 @@ case $kind in
     wall2="fix floor all $gran mesh n_meshes 1 meshes mesh"
     walls_line="fix reinforce/invert: walls: 1 mesh (2 triangles) of fix floor"
     cut=0.02 ;;
-  cylinder)
+  cylinder | hole)
     "$build/tests/make_scene" "$work/raw.data" --box 0 0.12 0 0.12 0 0.1 --radius 0.004 0.008 --fcc \
       --bar 0.0869 0.0869 0.005 0.0869 0.0869 0.095 0.011 0.015 >/dev/null
     shape=(--cylinder z 0.06 0.06 0.05 inside --plane 0 0 0 0 0 1) clip=()
@@ -48,22 +48,16 @@ case $kind in
     wall1="fix cyl all $gran primitive type 1 zcylinder 0.05 0.06 0.06"
     wall2="fix bottom all $gran primitive type 1 zplane 0"
     walls_line="fix reinforce/invert: walls: 1 primitive wall (zcylinder) of fix cyl, 1 primitive wall (zplane) of fix bottom"
-    cut=0.019 ;;
-  hole)
-    # The cylinder scene with the region keyword: a side out region, a
-    # cylindrical hole next to the bar, holds the matrix (whole spheres
-    # outside the hole).
-    "$build/tests/make_scene" "$work/raw.data" --box 0 0.12 0 0.12 0 0.1 --radius 0.004 0.008 --fcc \
-      --bar 0.0869 0.0869 0.005 0.0869 0.0869 0.095 0.011 0.015 >/dev/null
-    hole=(z 0.071 0.071 0.006)
-    shape=(--cylinder z 0.06 0.06 0.05 inside --plane 0 0 0 0 0 1 --cylinder "${hole[@]}" outside) clip=()
-    check_walls=(--wall-cylinder z 0.06 0.06 0.05 inside --wall-plane 0 0 0 0 0 1
-                 --wall-cylinder "${hole[@]}" outside)
-    wall1="fix cyl all $gran primitive type 1 zcylinder 0.05 0.06 0.06"
-    wall2="fix bottom all $gran primitive type 1 zplane 0"
-    fixvars=(-var hook1 "region hole cylinder ${hole[*]} 0 0.1 side out units box" -var extra "region hole")
-    walls_line="fix reinforce/invert: walls: 1 primitive wall (zcylinder) of fix cyl, 1 primitive wall (zplane) of fix bottom"
-    cut=0.019 ;;
+    cut=0.019
+    if [ "$kind" = hole ]; then
+      # The cylinder scene with the region keyword: a side out region, a
+      # cylindrical hole next to the bar, holds the matrix (whole spheres
+      # outside the hole).
+      hole=(z 0.071 0.071 0.006)
+      shape+=(--cylinder "${hole[@]}" outside)
+      check_walls+=(--wall-cylinder "${hole[@]}" outside)
+      fixvars=(-var hook1 "region hole cylinder ${hole[*]} 0 0.1 side out units box" -var extra "region hole")
+    fi ;;
   *) echo "walls.sh: unknown scene $kind"; exit 2 ;;
 esac
 # A clean start: the matrix wholly inside the box and clear of the walls.

@@ -8,8 +8,7 @@ set -euo pipefail
 build=$1 np=$2
 here=$(cd "$(dirname "$0")/.." && pwd)
 . "$(dirname "${BASH_SOURCE[0]}")/test_env.sh" "every"
-"$build/tests/make_scene" "$work/scene.data" --box 0 0.4 0 0.2 0 0.2 --radius 0.004 0.008 --fcc \
-  --bar 0.01 0.07 0.1 0.39 0.07 0.1 0.005 0.0075
+"$here/scripts/every_scene.sh" "$build" "$work/scene.data"
 launch=(mpirun -np "$np")
 [ "$np" -eq 1 ] && launch=()    # serial: the executable itself
 (cd "$here/lammps" && "${launch[@]}" "$build/src/lammps/lmp_reinforce" -in in.every \

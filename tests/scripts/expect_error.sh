@@ -23,15 +23,13 @@ if [ ! -e "$work/log" ]; then
   echo "FAIL: exit $status before the host wrote its log: the run did not start"
   exit 1
 fi
-errors=$(grep -c '^ERROR' "$work/log" || true)
-line=$(grep '^ERROR' "$work/log" | head -1)
+read_errors "$work/log"
 echo "exit $status: $line"
 fail=0
 [ "$status" -ne 0 ] || { echo "FAIL: the run did not stop"; fail=1; }
 [ "$status" -ne 124 ] || { echo "FAIL: the run hung"; fail=1; }
 [ "$errors" -eq 1 ] || { echo "FAIL: $errors ERROR lines, expected one"; fail=1; }
 if [ "${EXPECT_EXACT:-0}" = 1 ]; then
-  message=$(sed -E 's/^ERROR: //; s/ \([^()]*:[0-9]+\)$//' <<<"$line")
   [ "$message" = "$expected" ] || { echo "FAIL: the ERROR message is not exactly: $expected"; fail=1; }
 else
   grep -Eq -- "$expected" <<<"$line" || { echo "FAIL: ERROR line does not say: $expected"; fail=1; }

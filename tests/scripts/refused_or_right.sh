@@ -10,25 +10,21 @@
 #   refused_or_right.sh NAME NP BUILD_DIR REFUSAL -- MAKE_SCENE_ARGS -- LMP_VARS -- CHECK_ARGS
 set -uo pipefail
 name=$1 np=$2 build=$3 refusal=$4
-shift 4
 here=$(cd "$(dirname "$0")" && pwd)
 . "$(dirname "${BASH_SOURCE[0]}")/test_env.sh" "refused_${name}"
-split_lists "$@"
-make=("${list_a[@]}") vars=("${list_b[@]}")
-"$build/tests/make_scene" "$work/scene.data" "${make[@]}" || exit 2
+split_lists "${@:5}"    # list_a: make_scene, list_b: host -var, list_c: check_scene
+"$build/tests/make_scene" "$work/scene.data" "${list_a[@]}" || exit 2
 launch=(mpirun -np "$np")
 [ "$np" -eq 1 ] && launch=()
 (cd "$here/../lammps" && timeout 120 "${launch[@]}" "$build/src/lammps/lmp_reinforce" -in in.scene \
-   -var data "$work/scene.data" -var out "$work" -log "$work/log" -screen none "${vars[@]}") >"$work/stdout" 2>&1
+   -var data "$work/scene.data" -var out "$work" -log "$work/log" -screen none "${list_b[@]}") >"$work/stdout" 2>&1
 status=$?
 grep '^fix reinforce/invert: [0-9]' "$work/log" | head -1
 if [ "$status" -ne 0 ]; then
-  errors=$(grep -c '^ERROR' "$work/log" || true)
-  line=$(grep '^ERROR' "$work/log" | head -1)
+  read_errors "$work/log"
   echo "exit $status: $line"
   [ "$status" -ne 124 ] || { echo "FAIL: $name np=$np: the run hung"; exit 1; }
   [ "$errors" -eq 1 ] || { echo "FAIL: $name np=$np: $errors ERROR lines"; exit 1; }
-  message=$(sed -E 's/^ERROR: //; s/ \([^()]*:[0-9]+\)$//' <<<"$line")
   [ "$message" = "$refusal" ] ||
     { echo "FAIL: $name np=$np: the ERROR message is not exactly: $refusal"; exit 1; }
   [ ! -s "$work/after.dump" ] || ! grep -q '^ITEM:' "$work/after.dump" \

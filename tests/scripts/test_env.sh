@@ -2,7 +2,8 @@
 #   . "$(dirname "${BASH_SOURCE[0]}")/[../scripts/]test_env.sh" NAME
 # Open MPI may run as root and oversubscribe (2 cores, tests up to 8
 # processes); `work` is a fresh directory named after NAME, removed on exit;
-# split_lists parses the scripts' "-- A -- B -- C" arguments.
+# split_lists parses the scripts' "-- A -- B -- C" arguments; read_errors
+# and left_alone_line read a log's ERROR lines and a fix's "left alone" line.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 work=$(mktemp -d "${TMPDIR:-/tmp}/${1:-test}.XXXXXX")
 # Open MPI's session directory of this test's runs inside it, not in the
@@ -44,4 +45,27 @@ split_lists() {
   while [ $# -gt 0 ] && [ "$1" != "--" ]; do list_b+=("$1"); shift; done
   [ $# -gt 0 ] && shift
   list_c=("$@")
+}
+
+# read_errors LOG: errors (how many ERROR lines LOG has), line (the first)
+# and message (that line but for "ERROR: " and the source location
+# "(file:line)", the text an exact-message check compares).
+read_errors() {
+  errors=$(grep -c '^ERROR' "$1" || true)
+  line=$(grep '^ERROR' "$1" | head -1 || true)
+  message=$(sed -E 's/^ERROR: //; s/ \([^()]*:[0-9]+\)$//' <<<"$line")
+}
+
+# left_alone_line LOG FIX: the one line of LOG saying the fix left alone
+# atoms that are rebar of fix FIX; with none or several, every "left alone"
+# line to stderr and status 1.
+left_alone_line() {
+  local line
+  line=$(grep -E "^fix reinforce/invert: left alone [0-9]+ atoms that overlap the bars: they are rebar of fix $2\$" "$1" || true)
+  if [ -n "$line" ] && [ "$(grep -c . <<<"$line")" -eq 1 ]; then
+    echo "$line"
+    return 0
+  fi
+  grep 'left alone' "$1" >&2 || true
+  return 1
 }

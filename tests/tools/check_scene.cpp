@@ -995,6 +995,12 @@ int main(int argc, char **argv)
 {
   Options o;
   bool rebar_given = false;
+  // The options that take one number each.
+  const std::map<std::string, double *> numbers = {{"--tol", &o.tol},
+                                                   {"--overlap-tol", &o.overlap_tol},
+                                                   {"--rmin", &o.rmin},
+                                                   {"--rmax", &o.rmax},
+                                                   {"--zone", &o.zone}};
   for (int i = 1; i < argc; ++i) {
     const std::string k = argv[i];
     auto next = [&]() -> std::string {
@@ -1061,18 +1067,10 @@ int main(int argc, char **argv)
       w.label = "inside box [" + numg(w.lo[0]) + ", " + numg(w.hi[0]) + "] x [" + numg(w.lo[1]) +
                 ", " + numg(w.hi[1]) + "] x [" + numg(w.lo[2]) + ", " + numg(w.hi[2]) + "]";
       o.walls.push_back(w);
-    } else if (k == "--tol")
-      o.tol = to_double(next(), k);
-    else if (k == "--overlap-tol")
-      o.overlap_tol = to_double(next(), k);
-    else if (k == "--rmin")
-      o.rmin = to_double(next(), k);
-    else if (k == "--rmax")
-      o.rmax = to_double(next(), k);
+    } else if (numbers.count(k))
+      *numbers.at(k) = to_double(next(), k);
     else if (k == "--deleted")
       o.deleted = to_long(next(), k);
-    else if (k == "--zone")
-      o.zone = to_double(next(), k);
     else if (k == "--kept-ok")
       o.kept_ok = true;
     else if (k == "--overlap-ok-before")
