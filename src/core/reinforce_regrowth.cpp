@@ -140,7 +140,7 @@ private:
     std::sort(growing.begin(), growing.end());
     std::vector<Vec3> first;
     for (std::size_t i : growing) first.push_back(out_of_bars(i));
-    if (!growing.empty()) grow_all(growing, first, kBalance, stats);
+    if (!growing.empty()) grow_balance(growing, first, stats);
     return records(stats);
   }
 
@@ -434,6 +434,102 @@ private:
         show_twin(seed, true);
       }
     }
+  }
+
+  // The seeds `growing` and the zone's matrix grown back together from
+  // `first` (kBalance). What does not fit is deleted together, never a
+  // seed a try, and a zone that jams is seen as soon as a stage shows it:
+  // a stage before the last that does not relax to kBalanceSettled, or the
+  // last to kAbort, gives up every seed above that at once (the most
+  // overlapped first) and relaxes once more; still above it, the zone
+  // jams (a dense scene: its matrix alone does not grow back) and the
+  // growth stops. Grown, the seeds above kNearlyJammed go likewise, then
+  // the finish (finish_padded), then the seeds still overlapping and the
+  // finish once more. A zone that does not end clear goes back to where it
+  // was, its seeds given up (the last resort). At most two relaxations a
+  // stage and six after: the cost of a block is bounded whatever its seeds.
+  void grow_balance(std::vector<std::size_t> growing, const std::vector<Vec3> &first,
+                    RegrowthStats &stats)
+  {
+    const GrowthPlan &plan = kBalance;
+    for (std::size_t n = 0; n < growing.size(); ++n) {
+      Body &seed = bodies_[growing[n]];
+      show_twin(seed, false);
+      seed.present = true;
+      seed.x = first[n];
+      seed.scale = plan.start;
+    }
+    activate_zone();
+    bool jammed = false;
+    for (int step = 0; step <= plan.stages && !jammed; ++step) {
+      const double scale = plan.start + (1 - plan.start) * step / plan.stages;
+      const bool last = step == plan.stages;
+      for (std::size_t i : active_) bodies_[i].scale = last ? 1.0 : scale;
+      for (std::size_t i : growing) bodies_[i].scale = scale;
+      if (scale < plan.pull_until) {
+        relax_.set_pull(plan.pull);
+        relax_.run(plan.pull_iters, -1, stats.sweeps);    // every step, overlaps or not
+        relax_.set_pull(0);
+      }
+      const double settled = last ? kAbort : kBalanceSettled;
+      double worst = relax_.run(plan.stage_iters, last ? kSettled : settled, stats.sweeps);
+      if (worst > settled && drop_overlapped(growing, settled))
+        worst = relax_.run(plan.stage_iters, settled, stats.sweeps);
+      jammed = worst > settled;
+    }
+    bool clear = false;
+    if (!jammed) {
+      double worst = relax_.run(kJudgeIters, kNearlyJammed, stats.sweeps);
+      if (worst > kNearlyJammed && drop_overlapped(growing, kNearlyJammed))
+        worst = relax_.run(kJudgeIters, kNearlyJammed, stats.sweeps);
+      clear = !(worst > kNearlyJammed) && finish_padded(stats);
+      if (!clear && worst <= kNearlyJammed && drop_overlapped(growing, 0))
+        clear = finish_padded(stats);
+    }
+    deactivate_zone(clear);
+    for (std::size_t i : growing) {
+      Body &seed = bodies_[i];
+      seed.placed = seed.present = clear;
+      if (!clear) {
+        seed.x = seed.x0;
+        seed.scale = 1;
+        show_twin(seed, true);
+      }
+    }
+  }
+
+  // The growing seeds whose deepest overlap exceeds `above` (over the
+  // smaller radius) given up together, the most overlapped first, each
+  // only if it still exceeds it once those before it are out. True when
+  // one was.
+  bool drop_overlapped(std::vector<std::size_t> &growing, double above)
+  {
+    std::vector<std::pair<double, std::size_t>> order;
+    for (std::size_t i : growing) {
+      const double d = deepest(i);
+      if (d > above) order.push_back({-d, i});
+    }
+    std::sort(order.begin(), order.end());    // the deepest first, equals by index
+    bool dropped = false;
+    for (const auto &o : order)
+      if (deepest(o.second) > above) {
+        give_up(o.second, growing);
+        dropped = true;
+      }
+    return dropped;
+  }
+
+  // The grown zone relaxed clear without the crawl to kClear: FIRE with
+  // every pair's contact distance padded by kPad of its smaller radius
+  // until no padded overlap exceeds half of that, the true radii then
+  // clear by half a pad; checked at the true radii (finish_clear, which
+  // crawls on only from below kNearlyClear). True when clear.
+  bool finish_padded(RegrowthStats &stats)
+  {
+    relax_.set_pad(kPad);
+    relax_.run(kRelaxIters, 0.5 * kPad, stats.sweeps);
+    relax_.set_pad(0);
+    return finish_clear(relax_.run(0, kClear, stats.sweeps), stats);
   }
 
   // The shrunk sphere of seed s (if any) present or not.

@@ -86,6 +86,14 @@ constexpr int kBalanceStageIters = 300;
 constexpr double kBalancePullUntil = 0.97;
 constexpr int kBalancePullIters = 50;
 constexpr double kBalancePull = 0.002;
+// grow balance, what does not fit: a stage before the last relaxed to
+// kBalanceSettled rmin (the last to kSettled); one left above it (the last
+// above kAbort) gives up its seeds above it together, and still above it
+// after one more relaxation, the zone jams. The finish: FIRE with each
+// pair's contact distance padded by kPad rmin, to padded overlaps of at most
+// kPad / 2 rmin (the true radii clear by kPad / 2).
+constexpr double kBalanceSettled = 1e-2;
+constexpr double kPad = 1e-4;
 
 // FIRE (Bitzek et al. 2006; harmonic overlap energy, unit stiffness and
 // mass): time step (start, largest, growth kFireGrow after kFireDelay
