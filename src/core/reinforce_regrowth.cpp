@@ -471,20 +471,17 @@ private:
         relax_.run(plan.pull_iters, -1, stats.sweeps);    // every step, overlaps or not
         relax_.set_pull(0);
       }
-      const double settled = last ? kAbort : kBalanceSettled;
-      double worst = relax_.run(plan.stage_iters, last ? kSettled : settled, stats.sweeps);
-      if (worst > settled && drop_overlapped(growing, settled))
-        worst = relax_.run(plan.stage_iters, settled, stats.sweeps);
-      jammed = worst > settled;
+      double worst = relax_.run(plan.stage_iters, last ? kSettled : kBalanceSettled, stats.sweeps);
+      worst = drop_until(growing, worst, kAbort, plan.stage_iters, stats);
+      jammed = worst > kAbort;
     }
     bool clear = false;
     if (!jammed) {
       double worst = relax_.run(kJudgeIters, kNearlyJammed, stats.sweeps);
-      if (worst > kNearlyJammed && drop_overlapped(growing, kNearlyJammed))
-        worst = relax_.run(kJudgeIters, kNearlyJammed, stats.sweeps);
+      worst = drop_until(growing, worst, kNearlyJammed, kJudgeIters, stats);
       clear = !(worst > kNearlyJammed) && finish_padded(stats);
-      if (!clear && worst <= kNearlyJammed && drop_overlapped(growing, 0))
-        clear = finish_padded(stats);
+      for (int k = 0; k < kBalanceDrops && !clear && worst <= kNearlyJammed; ++k)
+        clear = drop_overlapped(growing, 0) && finish_padded(stats);
     }
     deactivate_zone(clear);
     for (std::size_t i : growing) {
@@ -498,10 +495,29 @@ private:
     }
   }
 
-  // The growing seeds whose deepest overlap exceeds `above` (over the
-  // smaller radius) given up together, the most overlapped first, each
-  // only if it still exceeds it once those before it are out. True when
-  // one was.
+  // While the zone's largest overlap `worst` exceeds `above`: half of the
+  // growing seeds above it given up together (drop_overlapped), then at
+  // most `iters` FIRE steps; at most kBalanceDrops times, and not once no
+  // seed is above it (then the matrix itself is). Returns the largest
+  // overlap left.
+  double drop_until(std::vector<std::size_t> &growing, double worst, double above, int iters,
+                    RegrowthStats &stats)
+  {
+    bool longer = false;    // relaxed once more with no seed above it
+    for (int k = 0; k < kBalanceDrops && worst > above; ++k) {
+      if (!drop_overlapped(growing, above)) {
+        if (longer) break;
+        longer = true;
+      }
+      worst = relax_.run(iters, above, stats.sweeps);
+    }
+    return worst;
+  }
+
+  // Half of the growing seeds whose deepest overlap exceeds `above` (over
+  // the smaller radius; at least one) given up together, the most
+  // overlapped first, each only if it still exceeds it once those before it
+  // are out. True when one was.
   bool drop_overlapped(std::vector<std::size_t> &growing, double above)
   {
     std::vector<std::pair<double, std::size_t>> order;
@@ -510,6 +526,7 @@ private:
       if (d > above) order.push_back({-d, i});
     }
     std::sort(order.begin(), order.end());    // the deepest first, equals by index
+    order.resize((order.size() + 1) / 2);
     bool dropped = false;
     for (const auto &o : order)
       if (deepest(o.second) > above) {
@@ -529,7 +546,7 @@ private:
     relax_.set_pad(kPad);
     relax_.run(kRelaxIters, 0.5 * kPad, stats.sweeps);
     relax_.set_pad(0);
-    return finish_clear(relax_.run(0, kClear, stats.sweeps), stats);
+    return finish_clear(relax_.run(kRelaxIters, kClear, stats.sweeps), stats);
   }
 
   // The shrunk sphere of seed s (if any) present or not.

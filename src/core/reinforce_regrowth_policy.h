@@ -92,7 +92,8 @@ constexpr double kBalancePull = 0.002;
 // after one more relaxation, the zone jams. The finish: FIRE with each
 // pair's contact distance padded by kPad rmin, to padded overlaps of at most
 // kPad / 2 rmin (the true radii clear by kPad / 2).
-constexpr double kBalanceSettled = 1e-2;
+constexpr double kBalanceSettled = 1e-3;
+constexpr int kBalanceDrops = 8;
 constexpr double kPad = 1e-4;
 
 // FIRE (Bitzek et al. 2006; harmonic overlap energy, unit stiffness and
