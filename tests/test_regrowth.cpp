@@ -603,3 +603,38 @@ TEST(Regrowth, BalanceDegenerateBlocks)
   for (const RoundRecord &r : rec) EXPECT_TRUE(is_finite(r.v));
   EXPECT_LE(largest_overlap_after(points, rec), kExact);
 }
+
+// grow balance, a block whose seeds cannot fit: 125 seeds crowded on a
+// bar in caged_target's cage (spheres that may not move, no room left by
+// the bar). They are deleted together and the zone goes back as it was,
+// within the FIRE steps of the stages and their drop rounds, whatever the
+// count (given up one a try, as before, each try another relaxation of the
+// zone: 33,700 steps here).
+TEST(Regrowth, BalanceSeedsThatCannotFitAreDeletedTogether)
+{
+  // The test's own copy of the policy's budget (docs/design.md, "Regrowth
+  // policy"): 11 stages, each 50 pull steps and at most 300 steps, then
+  // 8 drop rounds of 300.
+  const std::int64_t bound = 11 * (50 + (1 + 8) * 300);
+  std::vector<Particle> reads = caged_target();
+  reads.erase(reads.begin() + 1);    // its target: 125 others instead
+  std::vector<std::size_t> seeds;
+  std::int64_t id = 100;
+  for (int i = -2; i <= 2; ++i)
+    for (int j = -2; j <= 2; ++j)
+      for (int k = -2; k <= 2; ++k) {
+        seeds.push_back(reads.size());
+        const Vec3 c{0.15 + 0.01 * i + 0.001 * j, 0.01 * j + 0.002 * k, 0.01 * k + 0.003 * i};
+        reads.push_back(sphere(c, 0.1, id++, Role::Target));
+      }
+  RegrowthStats stats;
+  const std::vector<RoundRecord> rec =
+      regrow(reads, seeds, 0.3, balance_settings(), open_box(), stats);
+  EXPECT_EQ(stats.seeds, 125);
+  EXPECT_EQ(stats.deleted, 125);
+  EXPECT_EQ(stats.moved, 0);
+  EXPECT_EQ(stats.inexact, 0);
+  EXPECT_LE(stats.sweeps, bound);
+  EXPECT_LE(largest_overlap_after(reads, rec), kExact);
+  for (const RoundRecord &r : rec) EXPECT_EQ(r.kind, RecordKind::Deleted);
+}

@@ -15,19 +15,18 @@ namespace {
 using namespace regrowth_policy;
 
 // How seeds grow together: from `start` of their radius in `stages` equal
-// stages of at most `stage_iters` FIRE steps; with matrix_too the zone's
-// matrix shrinks and grows with them, pulled towards the bars (`pull`
-// for `pull_iters` steps a stage) while the radii are below `pull_until`.
+// stages of at most `stage_iters` FIRE steps; in grow balance the zone's
+// matrix shrinks and grows with them, pulled towards the bars (`pull` for
+// `pull_iters` steps a stage) while the radii are below `pull_until`.
 struct GrowthPlan {
   double start;
   int stages;
   int stage_iters;
-  bool matrix_too;
   double pull, pull_until;
   int pull_iters;
 };
-constexpr GrowthPlan kTogether{kStartScale, kGrowthSteps, kStepIters, false, 0, 0, 0};
-constexpr GrowthPlan kBalance{kBalanceStart, kBalanceStages,    kBalanceStageIters, true,
+constexpr GrowthPlan kTogether{kStartScale, kGrowthSteps, kStepIters, 0, 0, 0};
+constexpr GrowthPlan kBalance{kBalanceStart, kBalanceStages,    kBalanceStageIters,
                               kBalancePull,  kBalancePullUntil, kBalancePullIters};
 
 // The zone of one block's seeds: its bodies (seeds, movable matrix
@@ -140,7 +139,7 @@ private:
     std::sort(growing.begin(), growing.end());
     std::vector<Vec3> first;
     for (std::size_t i : growing) first.push_back(out_of_bars(i));
-    if (!growing.empty()) grow_all(growing, first, kBalance, stats);
+    if (!growing.empty()) grow_balance(growing, first, stats);
     return records(stats);
   }
 
@@ -370,47 +369,63 @@ private:
       growing.push_back(i);
       first.push_back(places.front());
     }
-    if (!growing.empty()) grow_all(growing, first, kTogether, stats);
+    if (!growing.empty()) grow_all(growing, first, stats);
     std::vector<std::size_t> shrunk;
     for (std::size_t i : waiting)
       if (bodies_[i].twin >= 0 && !bodies_[i].placed) shrunk.push_back(i);
     return shrunk;
   }
 
-  // The seeds `growing` grown together from `first` as `plan` says
-  // (grow_together, rebuild).
-  void grow_all(std::vector<std::size_t> growing, const std::vector<Vec3> &first,
-                const GrowthPlan &plan, RegrowthStats &stats)
+  // The seeds `growing` present at `first` at `start` of their radius (their
+  // shrunk spheres out), and the zone's movable spheres made active.
+  void start_growth(const std::vector<std::size_t> &growing, const std::vector<Vec3> &first,
+                    double start)
   {
     for (std::size_t n = 0; n < growing.size(); ++n) {
       Body &seed = bodies_[growing[n]];
       show_twin(seed, false);
       seed.present = true;
       seed.x = first[n];
-      seed.scale = plan.start;
+      seed.scale = start;
     }
     activate_zone();
+  }
+
+  // A growth ended: every sphere at its own radius, kept where it is when
+  // `clear`; else the zone back where it was, the seeds `growing` given up
+  // (their shrunk spheres back).
+  void end_growth(const std::vector<std::size_t> &growing, bool clear)
+  {
+    for (std::size_t i : active_) bodies_[i].scale = 1;
+    deactivate_zone(clear);
+    for (std::size_t i : growing) {
+      Body &seed = bodies_[i];
+      seed.placed = seed.present = clear;
+      seed.scale = 1;
+      if (!clear) {
+        seed.x = seed.x0;
+        show_twin(seed, true);
+      }
+    }
+  }
+
+  // The seeds `growing` grown together from `first` (grow_together,
+  // kTogether), the zone's matrix at its radii.
+  void grow_all(std::vector<std::size_t> growing, const std::vector<Vec3> &first,
+                RegrowthStats &stats)
+  {
+    const GrowthPlan &plan = kTogether;
+    start_growth(growing, first, plan.start);
     double worst = 0;
     for (int step = 0; step <= plan.stages && !growing.empty(); ++step) {
       const double scale = plan.start + (1 - plan.start) * step / plan.stages;
       for (std::size_t i : growing) bodies_[i].scale = scale;
-      if (plan.matrix_too) {
-        for (std::size_t i : active_) bodies_[i].scale = step == plan.stages ? 1.0 : scale;
-        if (scale < plan.pull_until) {
-          relax_.set_pull(plan.pull);
-          relax_.run(plan.pull_iters, -1, stats.sweeps);    // every step, overlaps or not
-          relax_.set_pull(0);
-        }
-      }
       worst = relax_.run(plan.stage_iters, kSettled, stats.sweeps);
       while (worst > kAbort && !growing.empty()) {
         give_up(most_overlapped(growing), growing);
         worst = relax_.run(plan.stage_iters, kSettled, stats.sweeps);
       }
     }
-    // Every seed given up before the last stage: the matrix at its own radii.
-    if (plan.matrix_too)
-      for (std::size_t i : active_) bodies_[i].scale = 1;
     for (;;) {
       worst = relax_.run(kJudgeIters, kClear, stats.sweeps);
       if (!(worst > kNearlyJammed) || growing.empty()) break;
@@ -425,15 +440,106 @@ private:
       if (clear || growing.empty()) break;
       give_up(most_overlapped(growing), growing);
     }
-    deactivate_zone(clear);
-    for (std::size_t i : growing) {
-      Body &seed = bodies_[i];
-      seed.placed = seed.present = clear;
-      if (!clear) {
-        seed.x = seed.x0;
-        show_twin(seed, true);
+    end_growth(growing, clear);
+  }
+
+  // The seeds `growing` and the zone's matrix grown back together from
+  // `first` (kBalance). What does not fit goes together, never a seed a
+  // try (drop_until), and a zone that jams is seen at the stage that shows
+  // it: a stage that leaves an overlap above kAbort gives up half of the
+  // seeds above it, relaxes, and so on for at most kBalanceDrops rounds;
+  // an overlap still above it, with no seed above it, is the matrix's own
+  // (a dense scene) and the growth stops. Grown, the same above
+  // kNearlyJammed, then the finish (finish_padded), the seeds still
+  // overlapping given up half at a time before it runs again. A zone that
+  // does not end clear goes back to where it was, its seeds given up (the
+  // last resort). A block's FIRE steps are bounded by the stages and the
+  // rounds, whatever its count of seeds.
+  void grow_balance(std::vector<std::size_t> growing, const std::vector<Vec3> &first,
+                    RegrowthStats &stats)
+  {
+    const GrowthPlan &plan = kBalance;
+    start_growth(growing, first, plan.start);
+    bool jammed = false;
+    for (int step = 0; step <= plan.stages && !jammed; ++step) {
+      const double scale = plan.start + (1 - plan.start) * step / plan.stages;
+      const bool last = step == plan.stages;
+      for (std::size_t i : active_) bodies_[i].scale = last ? 1.0 : scale;
+      for (std::size_t i : growing) bodies_[i].scale = scale;
+      if (scale < plan.pull_until) {
+        relax_.set_pull(plan.pull);
+        relax_.run(plan.pull_iters, -1, stats.sweeps);    // every step, overlaps or not
+        relax_.set_pull(0);
       }
+      double worst = relax_.run(plan.stage_iters, last ? kSettled : kBalanceSettled, stats.sweeps);
+      worst = drop_until(growing, worst, kAbort, plan.stage_iters, stats);
+      jammed = worst > kAbort;
     }
+    bool clear = false;
+    if (!jammed) {
+      double worst = relax_.run(kJudgeIters, kNearlyJammed, stats.sweeps);
+      worst = drop_until(growing, worst, kNearlyJammed, kJudgeIters, stats);
+      clear = !(worst > kNearlyJammed) && finish_padded(stats);
+      for (int k = 0; k < kBalanceDrops && !clear && worst <= kNearlyJammed; ++k)
+        clear = drop_overlapped(growing, 0) && finish_padded(stats);
+    }
+    end_growth(growing, clear);
+  }
+
+  // While the zone's largest overlap `worst` exceeds `above`: half of the
+  // growing seeds above it given up together (drop_overlapped), then at
+  // most `iters` FIRE steps; at most kBalanceDrops rounds, and once no seed
+  // is above it only one more relaxation (what is left is the matrix's).
+  // Returns the largest overlap left.
+  double drop_until(std::vector<std::size_t> &growing, double worst, double above, int iters,
+                    RegrowthStats &stats)
+  {
+    bool longer = false;    // relaxed once more with no seed above it
+    for (int k = 0; k < kBalanceDrops && worst > above; ++k) {
+      if (!drop_overlapped(growing, above)) {
+        if (longer) break;
+        longer = true;
+      }
+      worst = relax_.run(iters, above, stats.sweeps);
+    }
+    return worst;
+  }
+
+  // Half of the growing seeds whose deepest overlap exceeds `above` (over
+  // the smaller radius; at least one) given up together, the most
+  // overlapped first, each only if it still exceeds it once those before it
+  // are out. True when one was.
+  bool drop_overlapped(std::vector<std::size_t> &growing, double above)
+  {
+    std::vector<std::pair<double, std::size_t>> order;
+    for (std::size_t i : growing) {
+      const double d = deepest(i);
+      if (d > above) order.push_back({-d, i});
+    }
+    std::sort(order.begin(), order.end());    // the deepest first, equals by index
+    order.resize((order.size() + 1) / 2);
+    bool dropped = false;
+    for (const auto &o : order)
+      if (deepest(o.second) > above) {
+        give_up(o.second, growing);
+        dropped = true;
+      }
+    return dropped;
+  }
+
+  // The grown zone relaxed clear without the crawl to kClear: FIRE with the
+  // contact distance of every pair of moving spheres padded by kPad of its
+  // smaller radius until no padded overlap exceeds half of that (those
+  // pairs then clear by half a pad), then at the true radii to kClear (the
+  // pairs with a frozen sphere, unpadded: a few steps); checked by
+  // finish_clear, which crawls on only from below kNearlyClear. True when
+  // clear.
+  bool finish_padded(RegrowthStats &stats)
+  {
+    relax_.set_pad(kPad);
+    relax_.run(kRelaxIters, 0.5 * kPad, stats.sweeps);
+    relax_.set_pad(0);
+    return finish_clear(relax_.run(kRelaxIters, kClear, stats.sweeps), stats);
   }
 
   // The shrunk sphere of seed s (if any) present or not.

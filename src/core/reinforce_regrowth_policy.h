@@ -73,11 +73,10 @@ constexpr int kJudgeIters = 1000;
 // the bars displaced there). The rest, at their own radius, and the zone's
 // matrix start at kBalanceStart of their radii and grow back in
 // kBalanceStages equal stages of at most kBalanceStageIters FIRE steps
-// (fewer once no overlap exceeds kSettled rmin); while the radii are below
+// (fewer once settled, below); while the radii are below
 // kBalancePullUntil each stage starts with kBalancePullIters steps pulling
 // each matrix sphere towards its bar by a force of kBalancePull r (times its
-// mobility). A seed overlapping more than kAbort rmin after a stage is
-// given up (deleted), as is one while the grown zone does not end clear.
+// mobility).
 constexpr double kBalanceWidth = 8;
 constexpr double kBalanceShare = 1.3;
 constexpr double kBalanceStart = 0.8;
@@ -86,6 +85,18 @@ constexpr int kBalanceStageIters = 300;
 constexpr double kBalancePullUntil = 0.97;
 constexpr int kBalancePullIters = 50;
 constexpr double kBalancePull = 0.002;
+// grow balance, what does not fit: a stage before the last relaxed to
+// kBalanceSettled rmin (the last to kSettled). While an overlap above
+// kAbort rmin is left (kNearlyJammed once grown, any at the finish), half
+// of the seeds above it are given up together and the zone relaxed again,
+// at most kBalanceDrops rounds; one left with no seed above it after one
+// more relaxation is the matrix's: the zone jams and goes back. The finish:
+// FIRE with the contact distance of each pair of moving spheres padded by
+// kPad rmin, to padded overlaps of at most kPad / 2 rmin (those pairs clear
+// by kPad / 2), then at the true radii to kClear.
+constexpr double kBalanceSettled = 1e-3;
+constexpr int kBalanceDrops = 8;
+constexpr double kPad = 1e-4;
 
 // FIRE (Bitzek et al. 2006; harmonic overlap energy, unit stiffness and
 // mass): time step (start, largest, growth kFireGrow after kFireDelay

@@ -47,7 +47,10 @@ double SoftRelaxation::forces(std::vector<Vec3> &f) const
       const Body &o = bodies_[static_cast<std::size_t>(c.j)];
       if (!o.present) continue;
       const double rj = radius(o);
-      const double sum = ri + rj - c.allowed;    // contact, less the pair's own overlap
+      double sum = ri + rj - c.allowed;    // contact, less the pair's own overlap
+      // Padded between two moving spheres only: one held by its cap or a
+      // wall against a frozen sphere it touches could never make the pad.
+      if (pad_ > 0 && o.active) sum += pad_ * std::min(ri, rj);
       const double d2 = norm2(b.x - o.x);
       if (d2 >= sum * sum) continue;
       const double dist = std::sqrt(d2);

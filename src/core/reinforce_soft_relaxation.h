@@ -25,6 +25,10 @@ public:
   // mobility (0: none).
   void set_pull(double pull) { pull_ = pull; }
 
+  // Each pair's contact distance lengthened by `pad` of its smaller radius
+  // (0: none): relaxed to overlaps below the pad, the true radii clear.
+  void set_pad(double pad) { pad_ = pad; }
+
   // At most `iters` steps, until the largest overlap (over the smaller
   // radius) is at most `done`; adds the steps to `steps`. Returns the
   // largest overlap.
@@ -36,6 +40,7 @@ private:
   const Domain &domain_;
   double tol_;
   double pull_ = 0;
+  double pad_ = 0;
   double skin_ = 0;                           // of the neighbour lists
   double largest_ = 0;                        // the largest radius of a body
   std::vector<std::vector<Contact>> near_;    // an active sphere's neighbours
