@@ -57,6 +57,26 @@ public:
   std::vector<RoundRecord> run(RegrowthStats &stats)
   {
     if (settings_.grow_balance) return rebuild(stats);
+    return regrow_around(settings_.grow_together, stats);
+  }
+
+  // Whether the rebuilt zone (grow balance) jammed and went back: no
+  // records, the block as the relocation left it.
+  bool jammed() const { return jammed_; }
+
+  // The seeds the relocation placed shrunk left shrunk: only those without
+  // a place are grown back.
+  void leave_shrunk()
+  {
+    for (Body &seed : bodies_)
+      if (seed.seed && seed.twin >= 0) seed.present = false;
+  }
+
+private:
+  // The zone's matrix settled and compacted around the vacant seeds, which
+  // then grow back together (`together`) or one by one.
+  std::vector<RoundRecord> regrow_around(bool together, RegrowthStats &stats)
+  {
     delete_displaced(stats);
     std::vector<std::size_t> waiting;
     for (std::size_t i = 0; i < bodies_.size(); ++i)
@@ -66,7 +86,7 @@ public:
       }
     settle_onto_bars(stats);
     compact(stats);
-    if (settings_.grow_together) waiting = grow_together(waiting, stats);
+    if (together) waiting = grow_together(waiting, stats);
     for (std::size_t i : waiting) {
       const int twin = bodies_[i].twin;
       // A shrunk sphere that may not move (beyond the zone, an image) stays.
@@ -79,7 +99,6 @@ public:
     return records(stats);
   }
 
-private:
   // grow balance: the block's seeds deleted, the deepest centre first (a
   // centre inside a bar sphere first of all), until the deleted volume
   // is nearest kBalanceShare times the seeds' volume inside the bars; the
@@ -93,6 +112,7 @@ private:
       std::size_t i;
     };
     std::vector<Candidate> order;
+    const std::int64_t displaced_before = stats.displaced;
     double goal = 0;
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
       Body &seed = bodies_[i];
@@ -139,8 +159,10 @@ private:
     std::sort(growing.begin(), growing.end());
     std::vector<Vec3> first;
     for (std::size_t i : growing) first.push_back(out_of_bars(i));
-    if (!growing.empty()) grow_balance(growing, first, stats);
-    return records(stats);
+    if (growing.empty() || grow_balance(growing, first, stats)) return records(stats);
+    stats.displaced = displaced_before;    // the caller grows the block again
+    jammed_ = true;
+    return {};
   }
 
   // Where seed i starts its growth: where it was, pushed out of the bar
@@ -453,9 +475,9 @@ private:
   // kNearlyJammed, then the finish (finish_padded), the seeds still
   // overlapping given up half at a time before it runs again. A zone that
   // does not end clear goes back to where it was, its seeds given up (the
-  // last resort). A block's FIRE steps are bounded by the stages and the
-  // rounds, whatever its count of seeds.
-  void grow_balance(std::vector<std::size_t> growing, const std::vector<Vec3> &first,
+  // last resort; it returns whether the zone ended clear). A block's FIRE steps are bounded by the
+  // stages and the rounds, whatever its count of seeds.
+  bool grow_balance(std::vector<std::size_t> growing, const std::vector<Vec3> &first,
                     RegrowthStats &stats)
   {
     const GrowthPlan &plan = kBalance;
@@ -484,6 +506,7 @@ private:
         clear = drop_overlapped(growing, 0) && finish_padded(stats);
     }
     end_growth(growing, clear);
+    return clear;
   }
 
   // While the zone's largest overlap `worst` exceeds `above`: half of the
@@ -807,6 +830,7 @@ private:
   }
 
   const Settings &settings_;
+  bool jammed_ = false;
   const Domain &domain_;
   double width_;
   std::vector<Body> bodies_;
@@ -835,7 +859,18 @@ std::vector<RoundRecord> regrow(const std::vector<Particle> &reads,
 {
   if (seeds.empty()) return {};
   Zone zone(reads, seeds, width, settings, domain);
-  return zone.run(stats);
+  std::vector<RoundRecord> out = zone.run(stats);
+  if (!zone.jammed()) return out;
+  // The rebuilt zone jammed (a dense or settled packing): the block's
+  // targets without a place grown back as grow together does, in the same
+  // zone (in a zone of 5 rmax, grow together's, the LIGGGHTS example kept
+  // 10 of its 93 where this keeps 27); those placed shrunk stay shrunk.
+  Settings together = settings;
+  together.grow_balance = false;
+  together.grow_together = true;
+  Zone fallback(reads, seeds, width, together, domain);
+  fallback.leave_shrunk();
+  return fallback.run(stats);
 }
 
 }    // namespace reinforce
