@@ -140,8 +140,8 @@ const Keyword kKeywords[] = {
     {"grow", 1,
      [](FixOptions &o, const std::string *v) {
        if (v[0] != "balance" && v[0] != "each" && v[0] != "together")
-         throw OptionError(kIllegal + "grow must be 'balance', 'together' or 'each', got '" +
-                           v[0] + "'");
+         throw OptionError(kIllegal + "grow must be 'balance', 'together' or 'each', got '" + v[0] +
+                           "'");
        o.grow_set = true;
        o.grow_balance = v[0] == "balance";
        o.grow_together = v[0] == "together";
@@ -265,8 +265,10 @@ std::string lost_matrix_warning(const Stats &t)
                   what.empty() ? "" : " and ", outside, static_cast<long long>(t.displaced));
     what += part;
   }
-  return "Fix reinforce/invert regrowth " + what +
-         ": the matrix lost more than the bars displace";
+  // The share of their volume the targets keep (relocated over before).
+  const double kept = t.volume_before > 0 ? t.volume_after / t.volume_before : 0;
+  std::snprintf(part, sizeof part, ": the targets keep %.2f of their volume", kept);
+  return "Fix reinforce/invert regrowth " + what + part;
 }
 
 }    // namespace reinforce

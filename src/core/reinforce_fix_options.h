@@ -82,7 +82,8 @@ std::string summary_line(const Stats &totals, bool keep_unplaced, double seconds
 // The text of the WARNING (no "WARNING: ") when the invocation's totals,
 // the regrowth on, show matrix lost beyond what the bars displace: targets
 // left smaller than their own radius, or deleted beyond those whose centre
-// lies inside the bars; empty when neither.
+// lies inside the bars (and the share of their volume the targets keep);
+// empty when neither.
 std::string lost_matrix_warning(const Stats &totals);
 
 }    // namespace reinforce

@@ -37,10 +37,10 @@
 #                     exactly one line "WARNING: Fix reinforce/invert
 #                     regrowth left N targets smaller than their own radius
 #                     and deleted M targets beyond the K whose centre lies
-#                     inside the bars: the matrix lost more than the bars
-#                     displace" (either part alone when the other is 0),
-#                     N = f_ID[26], M = f_ID[3] - f_ID[16], K = f_ID[16],
-#                     N + M > 0; with regrow no, none
+#                     inside the bars: the targets keep S of their volume"
+#                     (either part alone when the other is 0), N =
+#                     f_ID[26], M = f_ID[3] - f_ID[16], K = f_ID[16], S =
+#                     f_ID[6] / f_ID[5], N + M > 0; with regrow no, none
 #   unplaced_isolated in.messages -var single yes: one matrix sphere alone
 #                     in an empty box, on a bar: deleted, and the unplaced
 #                     line names the cause: it contains EXPECTED
@@ -168,13 +168,14 @@ case $case in
     run in.messages -var data "$work/scene.data" -var fixextra "regrow no" -var after "run 0"
     [ "$(warnings | grep -c -- "$lost" || true)" -eq 0 ] || fail "a lost-matrix warning with regrow no"
     run in.messages -var data "$work/scene.data" -var after "run 0"
-    read -r shrunk d k <<<"$(totals LOST)"
+    read -r shrunk d k before after <<<"$(totals LOST)"
     m=$((d - k))
     [ $((shrunk + m)) -gt 0 ] || fail "nothing shrunk or deleted beyond the bars: nothing to warn of"
     what=""
     [ "$shrunk" -gt 0 ] && what="left $shrunk targets smaller than their own radius"
     [ "$m" -gt 0 ] && what="$what${what:+ and }deleted $m targets beyond the $k whose centre lies inside the bars"
-    one_warning "WARNING: Fix reinforce/invert regrowth $what: the matrix lost more than the bars displace"
+    share=$(awk -v a="$after" -v b="$before" 'BEGIN {printf "%.2f", a / b}')
+    one_warning "WARNING: Fix reinforce/invert regrowth $what: the targets keep $share of their volume"
     [ "$(warnings | grep -c -- "$lost" || true)" -eq 1 ] || fail "more than one lost-matrix warning"
     ;;
   unplaced_isolated)
