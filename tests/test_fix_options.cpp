@@ -250,13 +250,15 @@ TEST(FixOptions, WallsErrorsNameTheProblem)
             I + "walls must be 'check' or 'ignore', got 'maybe'");
 }
 
-// regrow: on by default with size keep (5 matrix radii), not with size fit
+// regrow: on by default with size keep (grow balance: kBalanceWidth matrix
+// radii), not with size fit
 // or unplaced keep unless asked (an error with unplaced keep); yes gives
 // the same, a length sets the zone's width (capped by the box); no turns
 // it off.
 TEST(FixOptions, RegrowWidthOrNo)
 {
-  EXPECT_DOUBLE_EQ(make_settings(parse_fix_arguments({"0", "bars"}), 0.1, 0.3, 100).regrow, 1.5);
+  EXPECT_DOUBLE_EQ(make_settings(parse_fix_arguments({"0", "bars"}), 0.1, 0.3, 100).regrow,
+                   regrowth_policy::kBalanceWidth * 0.3);
   EXPECT_EQ(
       make_settings(parse_fix_arguments({"0", "bars", "unplaced", "keep"}), 0.1, 0.3, 100).regrow,
       0);
@@ -266,7 +268,7 @@ TEST(FixOptions, RegrowWidthOrNo)
             0);    // the seed paper's mode, unless asked
   EXPECT_DOUBLE_EQ(
       make_settings(parse_fix_arguments({"0", "bars", "regrow", "yes"}), 0.1, 0.3, 100).regrow,
-      1.5);
+      regrowth_policy::kBalanceWidth * 0.3);
   EXPECT_EQ(
       make_settings(parse_fix_arguments({"0", "bars", "regrow", "0.5"}), 0.1, 0.3, 100).regrow,
       0.5);
@@ -296,42 +298,15 @@ TEST(FixOptions, RegrowWidthOrNo)
   EXPECT_NO_THROW(parse_fix_arguments({"0", "bars", "regrow", "no", "unplaced", "keep"}));
 }
 
-// grow: the regrowth's seeds together (the default, in a zone 5 matrix
-// radii wide unless regrow gives a width) or one by one (3 radii); an
-// error where there is no regrowth.
-TEST(FixOptions, GrowEachOrTogether)
+// grow: the zone rebuilt by the volume balance (the default, kBalanceWidth
+// matrix radii wide unless regrow gives a width), the seeds together (5
+// radii) or one by one (3 radii); an error where there is no regrowth.
+TEST(FixOptions, GrowBalanceTogetherOrEach)
 {
-  const Settings together = make_settings(parse_fix_arguments({"0", "bars"}), 0.1, 0.3, 100);
-  EXPECT_TRUE(together.grow_together);
-  EXPECT_DOUBLE_EQ(together.regrow, 1.5);
-  const Settings named =
-      make_settings(parse_fix_arguments({"0", "bars", "grow", "together"}), 0.1, 0.3, 100);
-  EXPECT_TRUE(named.grow_together);
-  EXPECT_DOUBLE_EQ(named.regrow, 1.5);
-  const Settings each =
-      make_settings(parse_fix_arguments({"0", "bars", "grow", "each"}), 0.1, 0.3, 100);
-  EXPECT_FALSE(each.grow_together);
-  EXPECT_DOUBLE_EQ(each.regrow, 0.9);
-  EXPECT_EQ(make_settings(parse_fix_arguments({"0", "bars", "grow", "together", "regrow", "0.5"}),
-                          0.1, 0.3, 100)
-                .regrow,
-            0.5);
-  EXPECT_TRUE(make_settings(parse_fix_arguments(
-                                {"0", "bars", "size", "fit", "regrow", "yes", "grow", "together"}),
-                            0.1, 0.3, 100)
-                  .grow_together);
-  const std::string I = "Illegal fix reinforce/invert command: ";
-  EXPECT_EQ(error_of({"0", "bars", "grow", "both"}),
-            I + "grow must be 'each', 'together' or 'balance', got 'both'");
-  EXPECT_EQ(error_of({"0", "bars", "grow"}), I + "missing value for keyword 'grow'");
-  const std::string off = I + "grow sets how the regrowth grows its seeds, and the regrowth is "
-                              "off (regrow no, unplaced keep, or size fit without regrow)";
-  EXPECT_EQ(error_of({"0", "bars", "grow", "together", "regrow", "no"}), off);
-  EXPECT_EQ(error_of({"0", "bars", "unplaced", "keep", "grow", "each"}), off);
-  EXPECT_EQ(error_of({"0", "bars", "size", "fit", "grow", "together"}), off);
-  EXPECT_EQ(error_of({"0", "bars", "regrow", "no", "grow", "balance"}), off);
-  // balance: the zone rebuilt, kBalanceWidth matrix radii wide unless
-  // regrow gives a width.
+  const Settings fallback = make_settings(parse_fix_arguments({"0", "bars"}), 0.1, 0.3, 100);
+  EXPECT_TRUE(fallback.grow_balance);
+  EXPECT_FALSE(fallback.grow_together);
+  EXPECT_DOUBLE_EQ(fallback.regrow, regrowth_policy::kBalanceWidth * 0.3);
   const Settings balance =
       make_settings(parse_fix_arguments({"0", "bars", "grow", "balance"}), 0.1, 0.3, 100);
   EXPECT_TRUE(balance.grow_balance);
@@ -342,11 +317,42 @@ TEST(FixOptions, GrowEachOrTogether)
                     0.3, 100)
           .regrow,
       0.5);
-  EXPECT_FALSE(make_settings(parse_fix_arguments({"0", "bars", "grow", "balance", "grow", "each"}),
-                             0.1, 0.3, 100)
-                   .grow_balance);
+  const Settings together =
+      make_settings(parse_fix_arguments({"0", "bars", "grow", "together"}), 0.1, 0.3, 100);
+  EXPECT_TRUE(together.grow_together);
   EXPECT_FALSE(together.grow_balance);
+  EXPECT_DOUBLE_EQ(together.regrow, 1.5);
+  const Settings each =
+      make_settings(parse_fix_arguments({"0", "bars", "grow", "each"}), 0.1, 0.3, 100);
+  EXPECT_FALSE(each.grow_together);
   EXPECT_FALSE(each.grow_balance);
+  EXPECT_DOUBLE_EQ(each.regrow, 0.9);
+  EXPECT_EQ(make_settings(parse_fix_arguments({"0", "bars", "grow", "together", "regrow", "0.5"}),
+                          0.1, 0.3, 100)
+                .regrow,
+            0.5);
+  EXPECT_TRUE(make_settings(parse_fix_arguments(
+                                {"0", "bars", "size", "fit", "regrow", "yes", "grow", "together"}),
+                            0.1, 0.3, 100)
+                  .grow_together);
+  // The last grow given wins, whichever mode came before.
+  const Settings last = make_settings(
+      parse_fix_arguments({"0", "bars", "grow", "balance", "grow", "each"}), 0.1, 0.3, 100);
+  EXPECT_FALSE(last.grow_balance);
+  EXPECT_FALSE(last.grow_together);
+  EXPECT_TRUE(make_settings(parse_fix_arguments({"0", "bars", "grow", "each", "grow", "balance"}),
+                            0.1, 0.3, 100)
+                  .grow_balance);
+  const std::string I = "Illegal fix reinforce/invert command: ";
+  EXPECT_EQ(error_of({"0", "bars", "grow", "both"}),
+            I + "grow must be 'balance', 'together' or 'each', got 'both'");
+  EXPECT_EQ(error_of({"0", "bars", "grow"}), I + "missing value for keyword 'grow'");
+  const std::string off = I + "grow sets how the regrowth grows its seeds, and the regrowth is "
+                              "off (regrow no, unplaced keep, or size fit without regrow)";
+  EXPECT_EQ(error_of({"0", "bars", "grow", "together", "regrow", "no"}), off);
+  EXPECT_EQ(error_of({"0", "bars", "unplaced", "keep", "grow", "each"}), off);
+  EXPECT_EQ(error_of({"0", "bars", "size", "fit", "grow", "together"}), off);
+  EXPECT_EQ(error_of({"0", "bars", "regrow", "no", "grow", "balance"}), off);
 }
 
 TEST(FixOptions, ImpossibleRadiusRangeFromScene)
@@ -507,4 +513,34 @@ TEST(Summary, ReportsCountsAndTime)
             "0.25 rmin, 300 sweeps), 3 rounds, 0.500 s (rmin 0.004)\n");
   EXPECT_NE(summary_line(t, true, 0.5, 3, 1).find("0 deleted"), std::string::npos);
   EXPECT_NE(summary_line(t, true, 0.5, 3, 1).find("2 kept"), std::string::npos);
+}
+
+// The WARNING on matrix lost by the regrowth: targets left shrunk, or
+// deleted beyond those whose centre lies inside the bars, and the share of
+// their volume the targets keep; none otherwise.
+TEST(FixOptions, LostMatrixWarning)
+{
+  Stats s;    // 3 deleted, all 3 centred inside the bars
+  s.unplaced = s.displaced = 3;
+  s.volume_before = 8;
+  s.volume_after = 6;
+  EXPECT_EQ(lost_matrix_warning(s), "");
+  s.shrunk = 2;
+  EXPECT_EQ(lost_matrix_warning(s), "Fix reinforce/invert regrowth left 2 targets smaller than "
+                                    "their own radius: the targets keep 0.75 of their volume");
+  s.displaced = 1;
+  EXPECT_EQ(lost_matrix_warning(s),
+            "Fix reinforce/invert regrowth left 2 targets smaller than their own radius and "
+            "deleted 2 targets beyond the 1 whose centre lies inside the bars: the targets keep "
+            "0.75 of their volume");
+  s.shrunk = 0;
+  EXPECT_EQ(lost_matrix_warning(s),
+            "Fix reinforce/invert regrowth deleted 2 targets beyond the 1 whose centre lies "
+            "inside the bars: the targets keep 0.75 of their volume");
+  // On only with the regrowth.
+  EXPECT_TRUE(regrowth_on(parse_fix_arguments({"0", "bars"})));
+  EXPECT_FALSE(regrowth_on(parse_fix_arguments({"0", "bars", "regrow", "no"})));
+  EXPECT_FALSE(regrowth_on(parse_fix_arguments({"0", "bars", "size", "fit"})));
+  EXPECT_TRUE(regrowth_on(parse_fix_arguments({"0", "bars", "size", "fit", "regrow", "yes"})));
+  EXPECT_FALSE(regrowth_on(parse_fix_arguments({"0", "bars", "unplaced", "keep"})));
 }

@@ -139,15 +139,11 @@ const Keyword kKeywords[] = {
      }},
     {"grow", 1,
      [](FixOptions &o, const std::string *v) {
+       if (v[0] != "balance" && v[0] != "each" && v[0] != "together")
+         throw OptionError(kIllegal + "grow must be 'balance', 'together' or 'each', got '" + v[0] +
+                           "'");
        o.grow_set = true;
        o.grow_balance = v[0] == "balance";
-       if (o.grow_balance) {
-         o.grow_together = false;
-         return;
-       }
-       if (v[0] != "each" && v[0] != "together")
-         throw OptionError(kIllegal + "grow must be 'each', 'together' or 'balance', got '" + v[0] +
-                           "'");
        o.grow_together = v[0] == "together";
      }},
     {"walls", 1,
@@ -157,6 +153,11 @@ const Keyword kKeywords[] = {
 };
 
 }    // namespace
+
+bool regrowth_on(const FixOptions &o)
+{
+  return !o.regrow_off && !o.keep_unplaced && (o.regrow_set || o.size == SizeMode::Keep);
+}
 
 FixOptions parse_fix_arguments(const std::vector<std::string> &args)
 {
@@ -179,9 +180,7 @@ FixOptions parse_fix_arguments(const std::vector<std::string> &args)
   if (o.regrow_set && o.keep_unplaced)
     throw OptionError(kIllegal + "regrow makes room for the targets unplaced keep leaves "
                                  "where they are: use one of them");
-  const bool regrowth =
-      !o.regrow_off && !o.keep_unplaced && (o.regrow_set || o.size == SizeMode::Keep);
-  if (o.grow_set && !regrowth)
+  if (o.grow_set && !regrowth_on(o))
     throw OptionError(kIllegal + "grow sets how the regrowth grows its seeds, and the "
                                  "regrowth is off (regrow no, unplaced keep, or size fit "
                                  "without regrow)");
@@ -219,12 +218,11 @@ Settings make_settings(const FixOptions &o, double matrix_rmin, double matrix_rm
   s.displaced = o.keep_unplaced ? 2 : (o.displaced_set ? o.displaced : 2);
   // The regrowth: by default with size keep (the seed paper's size fit
   // stays as it was unless asked), never with unplaced keep (which leaves
-  // such targets where they are); its zone reaches 5 radii, where the
-  // seeds grown together find the room they need, 3 (the second shell of
-  // neighbours of a seed) one by one, kBalanceWidth where the zone is
-  // rebuilt (docs/design.md, "Regrowth").
-  const bool regrow =
-      !o.regrow_off && !o.keep_unplaced && (o.regrow_set || o.size == SizeMode::Keep);
+  // such targets where they are); its zone reaches kBalanceWidth radii
+  // where the zone is rebuilt (the default: narrower zones jam), 5 where
+  // the seeds grown together find the room they need, 3 (the second shell
+  // of neighbours of a seed) one by one (docs/design.md, "Regrowth").
+  const bool regrow = regrowth_on(o);
   const double width =
       (o.grow_balance ? regrowth_policy::kBalanceWidth : (o.grow_together ? 5 : 3)) * matrix_rmax;
   s.regrow = regrow ? std::min(o.regrow > 0 ? o.regrow : width, bound) : 0;
@@ -248,6 +246,29 @@ std::string summary_line(const Stats &t, bool keep_unplaced, double seconds, int
                 t.max_overlap, static_cast<long long>(t.solves), static_cast<long long>(t.pushed),
                 t.max_push, static_cast<long long>(t.sweeps), rounds, seconds, rmin);
   return buf;
+}
+
+std::string lost_matrix_warning(const Stats &t)
+{
+  const long long shrunk = static_cast<long long>(t.shrunk);
+  const long long outside = static_cast<long long>(t.unplaced - t.displaced);
+  if (shrunk <= 0 && outside <= 0) return "";
+  std::string what;
+  char part[200];
+  if (shrunk > 0) {
+    std::snprintf(part, sizeof part, "left %lld targets smaller than their own radius", shrunk);
+    what = part;
+  }
+  if (outside > 0) {
+    std::snprintf(part, sizeof part,
+                  "%sdeleted %lld targets beyond the %lld whose centre lies inside the bars",
+                  what.empty() ? "" : " and ", outside, static_cast<long long>(t.displaced));
+    what += part;
+  }
+  // The share of their volume the targets keep (relocated over before).
+  const double kept = t.volume_before > 0 ? t.volume_after / t.volume_before : 0;
+  std::snprintf(part, sizeof part, ": the targets keep %.2f of their volume", kept);
+  return "Fix reinforce/invert regrowth " + what + part;
 }
 
 }    // namespace reinforce

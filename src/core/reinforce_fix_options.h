@@ -41,23 +41,27 @@ struct FixOptions {
   // cannot describe does not stop the run (the user takes the risk).
   bool walls_ignore = false;
   // regrow yes (the default with size keep, not with unplaced keep) or W:
-  // on, W the zone's width (else 5 * the matrix's largest radius); set
+  // on, W the zone's width (else the grow mode's default width, below); set
   // explicitly, an error with unplaced keep. regrow no: off.
   bool regrow_set = false;
   bool regrow_off = false;
   double regrow = 0;
-  // grow together (the default) or each: a block's seeds all at once, or
-  // one by one (its default width then 3 * the matrix's largest radius,
-  // else 5); or balance: the block's zone rebuilt, its count from the
-  // volume balance (its default width regrowth_policy::kBalanceWidth).
+  // grow balance (the default): the block's zone rebuilt, its count from
+  // the volume balance (its default width regrowth_policy::kBalanceWidth *
+  // the matrix's largest radius); or together: a block's seeds all at once
+  // (width 5 * that radius); or each: one by one (width 3 * that radius).
   bool grow_set = false;
-  bool grow_together = true;
-  bool grow_balance = false;
+  bool grow_together = false;
+  bool grow_balance = true;
 };
 
 // Smallest accepted `tol`: below it the rounding of coordinates (and of the
 // kernel's solutions, about 1e-15 of the radius) decides what overlaps.
 constexpr double kMinTol = 1e-10;
+
+// Whether the regrowth runs: by default with size keep, with size fit
+// when asked, never with regrow no or unplaced keep.
+bool regrowth_on(const FixOptions &o);
 
 // Parses the arguments that follow "fix ID group-ID reinforce/invert":
 // N rebar-group-ID keyword value ... Throws OptionError naming the problem.
@@ -74,5 +78,12 @@ Settings make_settings(const FixOptions &o, double matrix_rmin, double matrix_rm
 // rmin is the unit of the overlaps it reports.
 std::string summary_line(const Stats &totals, bool keep_unplaced, double seconds, int rounds,
                          double rmin);
+
+// The text of the WARNING (no "WARNING: ") when the invocation's totals,
+// the regrowth on, show matrix lost beyond what the bars displace: targets
+// left smaller than their own radius, or deleted beyond those whose centre
+// lies inside the bars (and the share of their volume the targets keep);
+// empty when neither.
+std::string lost_matrix_warning(const Stats &totals);
 
 }    // namespace reinforce

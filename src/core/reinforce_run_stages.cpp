@@ -141,8 +141,8 @@ std::string regrowth_line(const RegrowthStats &g, double seconds)
   char line[400];
   std::snprintf(line, sizeof line,
                 "fix reinforce/invert: regrowth: %lld targets without a void, %lld regrown at "
-                "their own radius, %lld deleted (%lld inside the bars); %lld shrunk across thin "
-                "bars, %lld regrown at their own radius; %lld matrix spheres moved (largest %.2f "
+                "their own radius, %lld deleted (%lld inside the bars); %lld placed shrunk taken "
+                "up, %lld regrown at their own radius; %lld matrix spheres moved (largest %.2f "
                 "rmin), %lld sweeps, max overlap %.2e rmin (%lld spheres above %.0e of the "
                 "smaller radius), %.3f s\n",
                 static_cast<long long>(g.seeds), static_cast<long long>(g.regrown),

@@ -27,12 +27,12 @@ struct Settings {
   // The width of the zone regrown around a target the relocation left
   // without a place (reinforce_regrowth.h); 0: none, such a target is deleted.
   double regrow = 0;
-  // The regrowth's seeds: all of a block's grown together (`grow
-  // together`, the default), or one by one (`grow each`).
-  bool grow_together = true;
-  // Or the zone of a block rebuilt around all of its seeds, their count
-  // from the volume balance (`grow balance`; grow_together is then false).
+  // The zone of a block rebuilt around all of its seeds, their count from
+  // the volume balance (`grow balance`, the fix's default: make_settings).
   bool grow_balance = false;
+  // Else the regrowth's seeds: all of a block's grown together (`grow
+  // together`), or one by one (`grow each`: both false).
+  bool grow_together = false;
 };
 
 }    // namespace reinforce

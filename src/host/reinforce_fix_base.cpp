@@ -248,6 +248,7 @@ void ReinforceFixBase::post_run()
     warn("Fix reinforce/invert did not relocate: the setup of this run was skipped (run pre no); "
          "it relocates at the setup of a run with pre yes");
   setup_seen = false;
+  lost_matrix_warned = false;
 }
 
 void ReinforceFixBase::invoke()
@@ -263,6 +264,13 @@ void ReinforceFixBase::invoke()
   FixHost host(host_view());
   const reinforce::Totals t = reinforce::run_invocation(host, options);
   warn_anchors();
+  // Once per run: with N > 0 every invocation would repeat it.
+  const std::string lost =
+      reinforce::regrowth_on(options) ? reinforce::lost_matrix_warning(t.stats) : "";
+  if (!lost.empty() && !lost_matrix_warned) {
+    warn(lost);
+    lost_matrix_warned = true;
+  }
 
   // Atoms removed in the last round leave with one more refresh (ghosts and
   // the atom map as they are now). The global count is lowered by the

@@ -99,9 +99,10 @@ protected:
 private:
   class Region *region = nullptr;
   reinforce::PendingFlags pending;
-  bool invoked = false;          // the relocation at the start of the first run is done
-  bool setup_seen = false;       // setup_pre_exchange ran in this run's setup
-  std::vector<double> totals;    // f_ID[1..], the latest invocation
+  bool invoked = false;               // the relocation at the start of the first run is done
+  bool setup_seen = false;            // setup_pre_exchange ran in this run's setup
+  bool lost_matrix_warned = false;    // this run's WARNING on matrix lost by the regrowth
+  std::vector<double> totals;         // f_ID[1..], the latest invocation
   // The atoms this invocation moved in the group of each fix spring/self:
   // their anchors are still the old positions.
   struct Anchors {

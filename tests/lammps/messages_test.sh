@@ -32,6 +32,15 @@
 #                     line, targets relocated
 #   spring_self_push  the same with push: N = the spheres the checker sees
 #                     moved, relocated or pushed, each once (> relocated)
+#   lost_matrix       in.messages with the defaults (radii 4.5 to 5 mm: few
+#                     voids), then a second run 0:
+#                     exactly one line "WARNING: Fix reinforce/invert
+#                     regrowth left N targets smaller than their own radius
+#                     and deleted M targets beyond the K whose centre lies
+#                     inside the bars: the targets keep S of their volume"
+#                     (either part alone when the other is 0), N =
+#                     f_ID[26], M = f_ID[3] - f_ID[16], K = f_ID[16], S =
+#                     f_ID[6] / f_ID[5], N + M > 0; with regrow no, none
 #   unplaced_isolated in.messages -var single yes: one matrix sphere alone
 #                     in an empty box, on a bar: deleted, and the unplaced
 #                     line names the cause: it contains EXPECTED
@@ -149,6 +158,25 @@ case $case in
     [ "$r" -gt 0 ] || fail "nothing relocated"
     ! grep -q 'walls:' "$work/log" || fail "a walls line: $(grep 'walls:' "$work/log")"
     echo "PASS: wall on the bars alone: no ERROR, no walls line, $r relocated"
+    ;;
+  lost_matrix)
+    # Radii too alike for the voids to hold the targets: the regrowth deletes
+    # beyond the bars' centres (the volume balance) or leaves some shrunk.
+    "$build/tests/make_scene" "$work/scene.data" --box 0 0.1 0 0.1 0 0.1 --radius 0.0045 0.005 --fcc \
+      --bar 0.01 0.05 0.05 0.09 0.05 0.05 0.005 0.0075 >/dev/null
+    lost='^WARNING: Fix reinforce/invert regrowth '
+    run in.messages -var data "$work/scene.data" -var fixextra "regrow no" -var after "run 0"
+    [ "$(warnings | grep -c -- "$lost" || true)" -eq 0 ] || fail "a lost-matrix warning with regrow no"
+    run in.messages -var data "$work/scene.data" -var after "run 0"
+    read -r shrunk d k before after <<<"$(totals LOST)"
+    m=$((d - k))
+    [ $((shrunk + m)) -gt 0 ] || fail "nothing shrunk or deleted beyond the bars: nothing to warn of"
+    what=""
+    [ "$shrunk" -gt 0 ] && what="left $shrunk targets smaller than their own radius"
+    [ "$m" -gt 0 ] && what="$what${what:+ and }deleted $m targets beyond the $k whose centre lies inside the bars"
+    share=$(awk -v a="$after" -v b="$before" 'BEGIN {printf "%.2f", a / b}')
+    one_warning "WARNING: Fix reinforce/invert regrowth $what: the targets keep $share of their volume"
+    [ "$(warnings | grep -c -- "$lost" || true)" -eq 1 ] || fail "more than one lost-matrix warning"
     ;;
   unplaced_isolated)
     [ -n "$expected" ] || { echo "messages_test.sh: unplaced_isolated needs EXPECTED"; exit 2; }
