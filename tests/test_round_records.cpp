@@ -19,7 +19,8 @@ TEST(RoundRecords, EncodeDecodeIsExact)
       {big, RecordKind::Deleted, {}, 0},
       {std::numeric_limits<std::int64_t>::max(), RecordKind::Kept, {}, 0},
       {std::numeric_limits<std::int64_t>::min(), RecordKind::Pushed, {1e-17, 0, -1}, 0},
-      {-7, RecordKind::Placed, {1, 2, 3}, 5}};
+      {-7, RecordKind::Placed, {1, 2, 3}, 5},
+      {42, RecordKind::Moved, {0.3, 1e-300, -0.0}, 0}};
   std::vector<double> flat;
   encode_records(in, flat);
   ASSERT_EQ(flat.size(), in.size() * kRecordDoubles);
@@ -51,7 +52,7 @@ TEST(RoundRecords, MalformedBuffersAreRefused)
   std::vector<RoundRecord> out;
   std::vector<double> short_buffer(flat.begin(), flat.end() - 1);
   EXPECT_FALSE(decode_records(short_buffer, out));
-  for (double kind : {-1.0, 4.0, 1.5, static_cast<double>(NAN)}) {
+  for (double kind : {-1.0, 5.0, 1.5, static_cast<double>(NAN)}) {
     std::vector<double> bad = flat;
     bad[2] = kind;
     EXPECT_FALSE(decode_records(bad, out)) << kind;

@@ -87,7 +87,7 @@ public:
       copies_of(id, copies);
       // A push moves the present sphere only; a vacant copy of the same
       // atom (a target the regrowth takes up again) stays where it is.
-      if (what == RecordKind::Pushed)
+      if (what == RecordKind::Pushed || what == RecordKind::Moved)
         copies.erase(std::remove_if(copies.begin(), copies.end(),
                                     [&](std::size_t c) { return view_[c].role == Role::Target; }),
                      copies.end());
@@ -114,6 +114,8 @@ public:
         moved.role = Role::Matrix;
         moved.pushable = true;    // a target is a matrix atom of the fix group
         if (copies.empty()) moved.owned = false;
+      } else if (what == RecordKind::Moved) {
+        moved.x = v;
       } else {
         moved.x = moved.x + v;
       }

@@ -810,7 +810,9 @@ private:
         if (norm2(dx) == 0) continue;
         stats.moved++;
         stats.max_move = std::max(stats.max_move, norm(dx) / settings_.rmin);
-        out.push_back({b.id, RecordKind::Pushed, dx, 0});
+        // Where it ends, not how far it went: a process that sees the atom
+        // only as a periodic image gets the same copies as its owner.
+        out.push_back({b.id, RecordKind::Moved, wrapped_into_box(b.x, domain_), 0});
       }
       // At their own radii, against everything present, beyond what each
       // pair overlapped at the start.

@@ -14,6 +14,7 @@ enum class RecordKind : int {
   Deleted = 1,    // no place found, deleted
   Kept = 2,       // no place found, left where it is (unplaced keep)
   Pushed = 3,     // v: the displacement of a present sphere
+  Moved = 4,      // v: the new centre of a present sphere, wrapped into the box (its radius kept)
 };
 
 struct RoundRecord {

@@ -37,6 +37,9 @@ void apply_to_host(HostHooks &host, const AtomArrays &a,
     case RecordKind::Pushed:
       host.move(i, Vec3{a.x[i][0], a.x[i][1], a.x[i][2]} + rec.v, a.radius[i]);
       break;
+    case RecordKind::Moved:
+      host.move(i, rec.v, a.radius[i]);
+      break;
     }
   }
 }
