@@ -14,7 +14,6 @@
 //       the wall options: every moved matrix sphere wholly on the matrix
 //       side of each wall (within tol of its radius), one check line each
 //   check_scene --same A B        the two dumps hold identical atoms (text)
-//     [--same-within D]           or the same atoms, places differing by at most D
 //   check_scene --stats D [--rebar-type T] [--rmin R]
 //       one line: atoms N matrix M max_matrix_rebar X max_matrix_matrix Y
 //       (largest overlaps / rmin; the format is parsed by bench/run.sh)
@@ -545,7 +544,6 @@ struct Options {
   double overlap_tol = 1e-12;    // for the pairs of a moved sphere (--overlap-tol)
   long deleted = -1;
   double zone = 0;    // --zone W: moved non-targets start within W of a target (0: not checked)
-  double same_within = 0;    // --same-within D: places may differ by D (box units), no more
   bool kept_ok = false, clean_before = false;
   std::vector<Wall> walls;
 };
@@ -557,32 +555,12 @@ int run_same(const Options &o)
   if (a.atoms.size() != b.atoms.size())
     why = str(static_cast<long>(a.atoms.size())) + " vs " + str(static_cast<long>(b.atoms.size())) +
           " atoms";
-  long differ = 0;
-  double largest = 0;
-  for (std::size_t i = 0; why.empty() && i < a.atoms.size(); ++i) {
-    const Atom &p = a.atoms[i], &q = b.atoms[i];
-    if (p.text == q.text) continue;
-    double d = 0;
-    for (int k = 0; k < 3; ++k) d = std::max(d, std::fabs(p.x[k] - q.x[k]));
-    // Within D: the same atom (id, type, radius), its place off by at most D.
-    if (o.same_within > 0 && p.id == q.id && p.type == q.type && p.r == q.r && d <= o.same_within) {
-      differ++;
-      largest = std::max(largest, d);
-      continue;
-    }
-    why = "first difference: '" + p.text + "' vs '" + q.text + "'";
-  }
-  const std::string n = str(static_cast<long>(a.atoms.size())) + " atoms";
-  if (o.same_within > 0)
-    check(why.empty(), "the same atoms within " + num(o.same_within) + " in " + o.same_a + " and " +
-                           o.same_b + " (" +
-                           (why.empty() ? n + ", " + str(differ) +
-                                              " not identical, largest difference " + num(largest)
-                                        : why) +
-                           ")");
-  else
-    check(why.empty(), "identical atoms in " + o.same_a + " and " + o.same_b + " (" +
-                           (why.empty() ? n : why) + ")");
+  for (std::size_t i = 0; why.empty() && i < a.atoms.size(); ++i)
+    if (a.atoms[i].text != b.atoms[i].text)
+      why = "first difference: '" + a.atoms[i].text + "' vs '" + b.atoms[i].text + "'";
+  check(why.empty(), "identical atoms in " + o.same_a + " and " + o.same_b +
+                         (why.empty() ? " (" + str(static_cast<long>(a.atoms.size())) + " atoms)"
+                                      : " (" + why + ")"));
   return failures ? 1 : 0;
 }
 
@@ -1018,10 +996,11 @@ int main(int argc, char **argv)
   Options o;
   bool rebar_given = false;
   // The options that take one number each.
-  const std::map<std::string, double *> numbers = {
-      {"--tol", &o.tol},   {"--overlap-tol", &o.overlap_tol},
-      {"--rmin", &o.rmin}, {"--rmax", &o.rmax},
-      {"--zone", &o.zone}, {"--same-within", &o.same_within}};
+  const std::map<std::string, double *> numbers = {{"--tol", &o.tol},
+                                                   {"--overlap-tol", &o.overlap_tol},
+                                                   {"--rmin", &o.rmin},
+                                                   {"--rmax", &o.rmax},
+                                                   {"--zone", &o.zone}};
   for (int i = 1; i < argc; ++i) {
     const std::string k = argv[i];
     auto next = [&]() -> std::string {
@@ -1118,7 +1097,7 @@ int main(int argc, char **argv)
                   "                   [--wall-plane PX PY PZ NX NY NZ]... [--wall-stl FILE]...\n"
                   "                   [--wall-cylinder x|y|z C1 C2 R inside|outside]...\n"
                   "                   [--inside-box XLO XHI YLO YHI ZLO ZHI]... (INF: no bound)\n"
-                  "       check_scene --same A B [--same-within D]\n"
+                  "       check_scene --same A B\n"
                   "       check_scene --stats D | --packing D [--rebar-type 2] [--rmin R]\n"
                   "       check_scene --compare-grid D    (grid search against brute force)\n"
                   "       --brute: find pairs by trying every pair (any mode)\n"
