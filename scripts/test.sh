@@ -80,7 +80,7 @@ run_ctest() {    # run_ctest BUILD_DIR [ctest args]; the part's name: $part (def
   # Tests run per group (the name's prefix; unit tests are Suite.Name).
   local groups
   groups=$(sed -nE 's/^ *[0-9]+\/[0-9]+ Test +#[0-9]+: ([^ ]+) .*/\1/p' "$out" |
-           sed -E 's/^[A-Za-z0-9]+\..*/unit/; s/^(check_scene|lammps|liggghts|stability|fuzz|src_lammps|src_liggghts|quality|layout)_.*/\1/' |
+           sed -E 's/^[A-Za-z0-9]+\..*/unit/; s/^(check_scene|lammps|liggghts|stability|fuzz|src_lammps|src_liggghts|quality|layout|docs)_.*/\1/' |
            sort | uniq -c | awk '{printf "%s%s %d", (NR > 1 ? ", " : ""), $2, $1}')
   parts+=("$name: $total tests, $((total - fails)) passed, $fails failed${groups:+ ($groups)}")
   [ -n "$line" ] || parts+=("$name: FAILED: ctest reported no result (no test found?)")
