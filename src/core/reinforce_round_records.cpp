@@ -44,7 +44,7 @@ bool decode_records(const std::vector<double> &in, std::vector<RoundRecord> &out
       return v >= 0 && v < limit && v == std::floor(v);
     };
     if (!whole_below(in[k], 4294967296.0) || !whole_below(in[k + 1], 4294967296.0) ||
-        !whole_below(in[k + 2], 5))
+        !whole_below(in[k + 2], kRecordKinds))
       return false;
     const int kind = static_cast<int>(in[k + 2]);
     const std::uint64_t bits =

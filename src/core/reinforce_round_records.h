@@ -16,6 +16,8 @@ enum class RecordKind : int {
   Pushed = 3,     // v: the displacement of a present sphere
   Moved = 4,      // v: the new centre of a present sphere, wrapped into the box (its radius kept)
 };
+// The kinds above: a decoded kind is a whole number below this.
+constexpr int kRecordKinds = 5;
 
 struct RoundRecord {
   std::int64_t id = 0;
