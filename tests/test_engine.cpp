@@ -304,32 +304,32 @@ TEST(Engine, KeepModeWithoutPushKeepsRadiiWhereAVoidHoldsThem)
   EXPECT_LT(radius_change(rel), 0.5 * radius_change(fitted));
 }
 
-// The targets placed with a radius below their own are counted; those a
-// bar thin beside them crossed (no rebar sphere above kThinBar of their
-// radius) are listed with where they were and their own radius, for the
-// regrowth; across a thick bar none is listed. (Size fit: most targets
-// take a smaller void's radius.)
-TEST(Engine, ShrunkAcrossThinBarsAreListed)
+// The targets placed with a radius below their own are counted; with the
+// regrowth on they are listed with where they were and their own radius,
+// for the regrowth; with it off none is. (Size fit: most targets take a
+// smaller void's radius.)
+TEST(Engine, ShrunkTargetsAreListedForTheRegrowth)
 {
-  for (const double bar_r : {0.008, 0.03}) {
-    Scene s = make_scene(3, bar_r);
+  for (const double regrow : {0.0, 0.05}) {
+    Scene s = make_scene(3, 0.008);
     Settings st = default_settings(SizeMode::Fit);
     st.displaced = 2;
+    st.regrow = regrow;
     mark(s, st.tol);
     Stats stats;
     const Relocation rel = relocate_targets(s.particles, st, s.domain, false, stats);
     std::vector<std::int64_t> shrunk;
     for (const TargetResult &t : rel.targets)
       if (t.outcome == Outcome::Placed && t.r < s.particles[t.index].r) shrunk.push_back(t.id);
-    ASSERT_GT(shrunk.size(), 0u) << bar_r;
+    ASSERT_GT(shrunk.size(), 0u) << regrow;
     EXPECT_EQ(stats.shrunk, static_cast<std::int64_t>(shrunk.size()));
-    if (bar_r > kThinBar * kRmin) {
-      EXPECT_TRUE(rel.shrunk_by_thin.empty());
+    if (regrow == 0) {
+      EXPECT_TRUE(rel.placed_shrunk.empty());
       continue;
     }
-    ASSERT_EQ(rel.shrunk_by_thin.size(), shrunk.size());
+    ASSERT_EQ(rel.placed_shrunk.size(), shrunk.size());
     for (std::size_t k = 0; k < shrunk.size(); ++k) {
-      const ShrunkTarget &t = rel.shrunk_by_thin[k];
+      const ShrunkTarget &t = rel.placed_shrunk[k];
       EXPECT_EQ(t.id, shrunk[k]);
       bool found = false;
       for (const Particle &p : s.particles)

@@ -139,12 +139,13 @@ const Keyword kKeywords[] = {
      }},
     {"grow", 1,
      [](FixOptions &o, const std::string *v) {
-       if (v[0] != "balance" && v[0] != "each" && v[0] != "together")
-         throw OptionError(kIllegal + "grow must be 'balance', 'together' or 'each', got '" + v[0] +
-                           "'");
+       if (v[0] == "together" || v[0] == "each")
+         throw OptionError(kIllegal + "grow " + v[0] +
+                           " is retired: the regrowth rebuilds one zone around every target "
+                           "without a void (grow balance, the default)");
+       if (v[0] != "balance")
+         throw OptionError(kIllegal + "grow must be 'balance', got '" + v[0] + "'");
        o.grow_set = true;
-       o.grow_balance = v[0] == "balance";
-       o.grow_together = v[0] == "together";
      }},
     {"walls", 1,
      [](FixOptions &o, const std::string *v) {
@@ -218,16 +219,11 @@ Settings make_settings(const FixOptions &o, double matrix_rmin, double matrix_rm
   s.displaced = o.keep_unplaced ? 2 : (o.displaced_set ? o.displaced : 2);
   // The regrowth: by default with size keep (the seed paper's size fit
   // stays as it was unless asked), never with unplaced keep (which leaves
-  // such targets where they are); its zone reaches kBalanceWidth radii
-  // where the zone is rebuilt (the default: narrower zones jam), 5 where
-  // the seeds grown together find the room they need, 3 (the second shell
-  // of neighbours of a seed) one by one (docs/design.md, "Regrowth").
+  // such targets where they are); its zone reaches kZoneWidth radii
+  // (narrower zones jam: docs/design.md, "Regrowth").
   const bool regrow = regrowth_on(o);
-  const double width =
-      (o.grow_balance ? regrowth_policy::kBalanceWidth : (o.grow_together ? 5 : 3)) * matrix_rmax;
+  const double width = regrowth_policy::kZoneWidth * matrix_rmax;
   s.regrow = regrow ? std::min(o.regrow > 0 ? o.regrow : width, bound) : 0;
-  s.grow_together = o.grow_together;
-  s.grow_balance = o.grow_balance;
   return s;
 }
 

@@ -46,13 +46,8 @@ struct FixOptions {
   bool regrow_set = false;
   bool regrow_off = false;
   double regrow = 0;
-  // grow balance (the default): the block's zone rebuilt, its count from
-  // the volume balance (its default width regrowth_policy::kBalanceWidth *
-  // the matrix's largest radius); or together: a block's seeds all at once
-  // (width 5 * that radius); or each: one by one (width 3 * that radius).
+  // grow balance (the only mode, the default): given, it changes nothing.
   bool grow_set = false;
-  bool grow_together = false;
-  bool grow_balance = true;
 };
 
 // Smallest accepted `tol`: below it the rounding of coordinates (and of the

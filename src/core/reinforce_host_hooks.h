@@ -12,6 +12,9 @@
 
 namespace reinforce {
 
+// The most values per atom HostHooks::forward sends.
+constexpr int kForwardWidth = 4;
+
 // A host's per-atom arrays, owned atoms first then ghosts.
 struct AtomArrays {
   int nlocal = 0, nall = 0;
@@ -65,9 +68,21 @@ public:
   virtual void move(int local, Vec3 x, double r) = 0;
   virtual void remove(std::vector<int> &locals) = 0;
 
-  // Global reductions over all processes.
+  // Global reductions over all processes: of one value, and of each
+  // element of a vector (the same length on every process).
   virtual double sum(double v) = 0;
   virtual double max(double v) = 0;
+  virtual void sum_each(std::vector<double> &values) = 0;
+  virtual void max_each(std::vector<double> &values) = 0;
+
+  // Forward communication of per-atom values, as the host sends its atoms'
+  // coordinates to their ghost copies: `values` holds `width` (at most
+  // kForwardWidth) values per atom, owned atoms then ghosts (AtomArrays'
+  // nall rows); each ghost's row is overwritten by its owner's. With
+  // `positions`, the first three values of a row are a position, shifted
+  // by the box length where the ghost is a periodic image, as the host
+  // shifts its ghosts' coordinates. Collective; the atoms and ghosts stay.
+  virtual void forward(std::vector<double> &values, int width, bool positions) = 0;
   // Every process's values, concatenated in rank order (collective).
   virtual std::vector<double> gather_all(const std::vector<double> &mine) = 0;
   // A round's results, exchanged without a barrier between partners

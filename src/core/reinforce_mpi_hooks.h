@@ -120,6 +120,8 @@ public:
 
   double sum(double v) final { return reduce(v, MPI_SUM); }
   double max(double v) final { return reduce(v, MPI_MAX); }
+  void sum_each(std::vector<double> &values) final { reduce_each(values, MPI_SUM); }
+  void max_each(std::vector<double> &values) final { reduce_each(values, MPI_MAX); }
   std::vector<double> gather_all(const std::vector<double> &mine) final
   {
     return mpi_gather_all(mine, comm_);
@@ -141,6 +143,12 @@ private:
     double out = 0;
     MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, op, comm_);
     return out;
+  }
+
+  void reduce_each(std::vector<double> &values, MPI_Op op)
+  {
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, op,
+                  comm_);
   }
 
   MPI_Comm comm_;

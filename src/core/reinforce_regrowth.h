@@ -1,26 +1,17 @@
-// Regrowth: room made for the targets the voids could not take, by moving
-// the matrix near them (docs/design.md, "Regrowth"). The targets of a
-// block left without a place (the seeds) are taken out; the zone's matrix
-// (within `width` of them) settles onto the bars as hard spheres, then is
-// compacted against them as soft spheres; then each seed, by id, goes back
-// at its own radius where it fits alone; the others grow together while
-// the zone relaxes, those it cannot hold given up (deleted), or (grow
-// each) one by one, a seed that cannot fit deleted and the zone left as it
-// was. The bars and everything beyond the zone are frozen, sizes never
-// change, and no pair overlaps more than it did at the start.
-// A target the relocation placed shrunk across thin bars is a seed too
-// (grown with the others): its shrunk sphere gives way while it tries its
-// own radius, and stays where that fails.
-// Or (grow balance) the zone rebuilt: the seeds deleted by the volume
-// balance, deepest first, the rest grown back with the zone's matrix
-// shrunk and grown with them (every target placed shrunk is a seed then).
+// Regrowth: room made for the targets the voids could not take, or took
+// only shrunk (the seeds), by growing the matrix around them again
+// (docs/design.md, "Regrowth"). The count of seeds kept is decided first,
+// from the volume the bars displace; then one zone (the matrix within its
+// width of any seed, over the whole scene) shrinks and grows back with the
+// kept seeds, every process moving the zone spheres it owns at once; the
+// bars and everything beyond the zone stay, sizes never change, and no
+// pair ends overlapping beyond what it overlapped at the start.
 #pragma once
 
 #include "reinforce_domain.h"
-#include "reinforce_particle.h"
-#include "reinforce_regrowth_policy.h"
+#include "reinforce_host_hooks.h"
+#include "reinforce_relocation.h"
 #include "reinforce_settings.h"
-#include "reinforce_round_records.h"
 
 #include <cstdint>
 #include <vector>
@@ -28,38 +19,41 @@
 namespace reinforce {
 
 struct RegrowthStats {
-  std::int64_t seeds = 0;             // targets the regrowth took up
+  std::int64_t seeds = 0;             // targets without a void the regrowth took up
   std::int64_t regrown = 0;           // of them, put back at their own radius
-  std::int64_t displaced = 0;         // of them, deleted first: centre inside a bar sphere
+  std::int64_t displaced = 0;         // of them, deleted with the centre inside a bar
   std::int64_t deleted = 0;           // of them, deleted (displaced included)
-  std::int64_t shrunk_seeds = 0;      // targets placed shrunk across thin bars, taken up again
+  std::int64_t shrunk_seeds = 0;      // targets placed shrunk, taken up again
   std::int64_t shrunk_regrown = 0;    // of them, put back at their own radius
   std::int64_t inexact = 0;     // moved spheres left overlapping (regrowth_policy::kRegrowthExact)
   std::int64_t moved = 0;       // matrix spheres moved
-  std::int64_t sweeps = 0;      // projection sweeps over a block's zone
-  double volume_regrown = 0;    // volume the regrown seeds added
+  std::int64_t sweeps = 0;      // FIRE steps (the same on every process)
+  double volume_regrown = 0;    // volume of the targets without a void put back
+  double volume_unshrunk = 0;   // volume the shrunk targets put back got back
   double max_overlap = 0;       // largest overlap of a regrown or moved sphere, / rmin
   double max_move = 0;          // largest displacement of a matrix sphere, / rmin
+  std::int64_t jammed = 0;      // 1 when the zone jammed or did not end clear (went back)
+  double jam_scale = 0;         // the radii it reached then, a share of their own
 };
 
-// How far the regrowth of one seed reaches from its centre: it moves
-// spheres whose centres lie within `write` (before and after) and reads
-// those within `read`, given the largest radius of a movable sphere
-// (matrix_rmax) and of any sphere (largest_r).
-struct RegrowthReach {
-  double write = 0, read = 0;
+// What the regrowth needs besides the host's atoms.
+struct RegrowthInput {
+  Settings settings;
+  Domain domain;
+  double width = 0;          // the zone: the matrix within this of a seed
+  double matrix_rmin = 0, matrix_rmax = 0, largest = 0;
+  std::vector<ShrunkTarget> shrunk;    // every process's targets placed shrunk
 };
-RegrowthReach regrowth_reach(double width, double matrix_rmax, double largest_r);
 
-// Regrows the zone of the seeds `seeds` (indices of Target particles of
-// `reads`; `reads` holds every particle within regrowth_reach().read of
-// them, and what else it holds is frozen). Other Target particles are vacant. Returns a Placed
-// record for each seed kept, a Deleted one for each seed deleted (none for a shrunk one), and a
-// Pushed one (the displacement) for each matrix sphere moved. The result depends only on the
-// particles within reach of the seeds, not on their order.
-std::vector<RoundRecord> regrow(const std::vector<Particle> &reads,
-                                const std::vector<std::size_t> &seeds, double width,
-                                const Settings &settings, const Domain &domain,
-                                RegrowthStats &stats);
+// How far the ghosts must reach for the regrowth: a moving sphere's
+// neighbours, wherever both move within their caps, its bar, and the bars
+// near a shrunk seed's old centre (within the relocation's `search` of
+// where it was placed).
+double regrowth_ghost_reach(double matrix_rmax, double largest, double search);
+
+// Regrows the seeds: the host's pending atoms and `in.shrunk`, after the
+// host's refresh with the ghosts reaching regrowth_ghost_reach. Moves and
+// deletes the host's owned atoms. Collective.
+void regrow(HostHooks &host, const RegrowthInput &in, RegrowthStats &stats);
 
 }    // namespace reinforce

@@ -1,7 +1,6 @@
 #include "reinforce_regrowth_zone.h"
 
 #include "reinforce_cell_grid.h"
-#include "reinforce_regrowth.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,108 +9,174 @@
 
 namespace reinforce {
 
-std::vector<Body> zone_bodies(const std::vector<Particle> &reads,
-                              const std::vector<std::size_t> &seeds, double width)
+namespace {
+
+// The flags a body's owner sends its ghosts.
+enum : int { kPresent = 1, kMovable = 2, kGrowing = 4, kMatrix = 8 };
+
+int flags_of(const ZoneBody &b)
 {
-  std::vector<Body> bodies;
-  std::vector<std::size_t> seed_list(seeds);
-  std::sort(seed_list.begin(), seed_list.end(),
-            [&](std::size_t a, std::size_t b) { return reads[a].id < reads[b].id; });
-  // Only the nearest seed within the width matters (cells of that size).
-  CellGrid near_seed(width);
-  for (std::size_t s : seed_list) near_seed.insert_around(reads[s].x, static_cast<int>(s));
-  std::unordered_map<std::int64_t, int> copies;
-  for (std::size_t k = 0; k < reads.size(); ++k) {
-    const Particle &p = reads[k];
-    if (p.role == Role::Target) continue;    // vacant (other blocks' targets, images)
-    double nearest = INFINITY;
-    near_seed.for_each_in_cell(p.x, [&](int s) {
-      nearest = std::min(nearest, norm(reads[static_cast<std::size_t>(s)].x - p.x));
-    });
-    Body b;
-    b.x = b.x0 = p.x;
-    b.R = p.r;
-    b.id = p.id;
-    b.rebar = p.role == Role::Rebar;
-    b.movable = p.role == Role::Matrix && p.pushable && !p.other_rebar && nearest < width;
-    if (b.movable) {
-      b.w_zone = 1 - nearest / width;
-      b.cap = regrowth_policy::kMoveShare * width * b.w_zone;
-      copies[b.id]++;
+  return (b.present ? kPresent : 0) | (b.movable ? kMovable : 0) | (b.growing ? kGrowing : 0) |
+         (b.matrix ? kMatrix : 0);
+}
+
+void set_flags(ZoneBody &b, int flags)
+{
+  b.present = flags & kPresent;
+  b.movable = flags & kMovable;
+  b.growing = flags & kGrowing;
+  b.matrix = flags & kMatrix;
+}
+
+// The distance from x to the nearest seed (or a periodic image of one)
+// within `range`, else +infinity.
+class SeedDistance {
+public:
+  SeedDistance(const std::vector<Seed> &seeds, double range, const Domain &domain)
+      : range_(range), grid_(range)
+  {
+    Domain around = domain;
+    for (int d = 0; d < 3; ++d) {
+      around.view_lo[d] = domain.lo[d] - range;
+      around.view_hi[d] = domain.hi[d] + range;
     }
-    bodies.push_back(b);
+    for (const Seed &s : seeds)
+      for (const Vec3 &image : images_in_view(s.x, around, true)) {
+        grid_.insert(image, static_cast<int>(points_.size()));
+        points_.push_back(image);
+      }
   }
-  // An atom seen twice here (periodic images) stays where it is: moving
-  // one copy would leave the other behind.
-  for (Body &b : bodies)
-    if (b.movable && copies[b.id] > 1) b.movable = false;
-  for (std::size_t s : seed_list) {
-    Body b;
-    b.x = b.x0 = reads[s].x;
-    b.R = reads[s].r;
-    b.id = reads[s].id;
-    b.seed = b.movable = true;
-    b.cap = regrowth_policy::kMoveShare * width;
-    bodies.push_back(b);
-  }
-  // Sweeps go by id (then place: frozen images share one), whatever the
-  // order of `reads`.
-  std::sort(bodies.begin(), bodies.end(), [](const Body &a, const Body &b) {
-    return std::tie(a.id, a.x0.x, a.x0.y, a.x0.z) < std::tie(b.id, b.x0.x, b.x0.y, b.x0.z);
-  });
-  std::vector<int> bars;
-  for (std::size_t k = 0; k < bodies.size(); ++k)
-    if (bodies[k].rebar) bars.push_back(static_cast<int>(k));
-  // Twins: one id, sorted next to each other.
-  for (std::size_t k = 0; k < bodies.size(); ++k) {
-    if (!bodies[k].seed) continue;
-    for (std::size_t j = k; j-- > 0 && bodies[j].id == bodies[k].id;)
-      if (!bodies[j].seed) bodies[k].twin = static_cast<int>(j);
-    for (std::size_t j = k + 1; j < bodies.size() && bodies[j].id == bodies[k].id; ++j)
-      if (!bodies[j].seed) bodies[k].twin = static_cast<int>(j);
-    if (bodies[k].twin >= 0)
-      bodies[static_cast<std::size_t>(bodies[k].twin)].twin = static_cast<int>(k);
-  }
-  for (Body &b : bodies) {
-    if (!b.movable || b.seed) continue;
+  double operator()(Vec3 x) const
+  {
     double nearest = INFINITY;
-    for (int k : bars) {
-      const Body &bar = bodies[static_cast<std::size_t>(k)];
-      const double gap = norm(b.x0 - bar.x0) - bar.R;
-      if (gap < nearest) {
+    grid_.for_each_near(x, range_, [&](int k) {
+      nearest = std::min(nearest, norm(points_[static_cast<std::size_t>(k)] - x));
+    });
+    return nearest < range_ ? nearest : INFINITY;
+  }
+
+private:
+  double range_;
+  CellGrid grid_;
+  std::vector<Vec3> points_;
+};
+
+bool is_matrix(const AtomArrays &a, int i)
+{
+  return (a.mask[i] & a.group_bit) && !(a.mask[i] & (a.rebar_bit | a.frozen_bits));
+}
+
+}    // namespace
+
+Zone::Zone(HostHooks &host, const AtomArrays &a, const std::vector<Seed> &seeds,
+           const ZoneShape &shape, const Domain &domain)
+    : host_(host)
+{
+  const SeedDistance seed_distance(seeds, std::max(shape.reach, shape.width), domain);
+  std::vector<double> nearest(static_cast<std::size_t>(a.nall));
+  for (int i = 0; i < a.nall; ++i)
+    nearest[i] = seed_distance(Vec3{a.x[i][0], a.x[i][1], a.x[i][2]});
+  // Each owner decides its atoms' radius and flags; the ghosts learn them.
+  std::unordered_map<std::int64_t, const Seed *> seed_of;
+  for (const Seed &s : seeds) seed_of[s.id] = &s;
+  rows_.assign(static_cast<std::size_t>(a.nall) * 2, 0.0);
+  for (int i = 0; i < a.nlocal; ++i) {
+    ZoneBody b;
+    b.R = a.radius[i];
+    b.present = true;
+    const auto s = seed_of.find(a.id(i));
+    if (s != seed_of.end()) {
+      const Seed &seed = *s->second;
+      const bool vacant = a.pending[i] != 0;
+      b.present = seed.kept || !vacant;
+      b.movable = b.present;
+      b.growing = seed.kept;
+      b.matrix = !seed.kept;    // a shrunk one left shrunk is matrix again
+      if (seed.kept) b.R = seed.R;
+    } else if (is_matrix(a, i)) {
+      b.matrix = true;
+      b.movable = nearest[i] < shape.width;
+    }
+    rows_[2 * i] = b.R;
+    rows_[2 * i + 1] = flags_of(b);
+  }
+  host_.forward(rows_, 2, false);
+  for (int i = 0; i < a.nall; ++i) {
+    if (!(nearest[i] < shape.reach)) continue;
+    ZoneBody b;
+    b.x = b.x0 = Vec3{a.x[i][0], a.x[i][1], a.x[i][2]};
+    b.R = rows_[2 * i];
+    set_flags(b, static_cast<int>(rows_[2 * i + 1]));
+    b.id = a.id(i);
+    b.local = i;
+    b.owned = i < a.nlocal;
+    b.rebar = (a.mask[i] & a.rebar_bit) != 0;
+    if (b.owned && b.movable) {
+      b.w = b.growing ? 1.0 : std::max(0.0, 1 - nearest[i] / shape.width);
+      b.cap = shape.cap * b.w;
+      moving.push_back(static_cast<int>(bodies.size()));
+    }
+    if (!b.present) b.movable = false;
+    bodies.push_back(b);
+  }
+  by_id_.resize(bodies.size());
+  for (std::size_t k = 0; k < bodies.size(); ++k) by_id_[k] = static_cast<int>(k);
+  std::sort(by_id_.begin(), by_id_.end(),
+            [&](int p, int q) { return bodies[p].id < bodies[q].id; });
+  find_bars(shape.pull_range);
+  rows_.assign(static_cast<std::size_t>(a.nall) * 3, 0.0);
+}
+
+// Each owned movable matrix sphere's nearest rebar sphere within `range`
+// (its owner sees every one: the ghosts reach that far).
+void Zone::find_bars(double range)
+{
+  CellGrid grid(range);
+  for (std::size_t k = 0; k < bodies.size(); ++k)
+    if (bodies[k].rebar) grid.insert(bodies[k].x0, static_cast<int>(k));
+  for (int m : moving) {
+    ZoneBody &b = bodies[static_cast<std::size_t>(m)];
+    if (b.growing) continue;
+    double nearest = range;
+    grid.for_each_near(b.x0, range, [&](int k) {
+      const ZoneBody &o = bodies[static_cast<std::size_t>(k)];
+      const double gap = norm(o.x0 - b.x0) - o.R;
+      if (gap < nearest || (gap == nearest && b.bar >= 0 && o.id < bodies[b.bar].id)) {
         nearest = gap;
         b.bar = k;
       }
-    }
+    });
   }
-  return bodies;
 }
 
-std::vector<std::vector<Contact>> zone_contacts(const std::vector<Body> &bodies)
+void Zone::forward_positions()
 {
-  std::vector<std::vector<Contact>> contacts;
-  double largest = 0, cap = 0;
-  for (const Body &b : bodies) {
-    largest = std::max(largest, b.R);
-    cap = std::max(cap, b.cap);
+  for (int m : moving) {
+    const ZoneBody &b = bodies[static_cast<std::size_t>(m)];
+    for (int d = 0; d < 3; ++d) rows_[3 * b.local + d] = b.x[d];
   }
-  CellGrid grid(2 * (largest + cap));
-  for (std::size_t k = 0; k < bodies.size(); ++k) grid.insert(bodies[k].x0, static_cast<int>(k));
-  contacts.assign(bodies.size(), {});
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    const Body &b = bodies[i];
-    if (!b.movable) continue;
-    grid.for_each_near(b.x0, b.R + largest + b.cap + cap, [&](int j) {
-      if (static_cast<std::size_t>(j) == i) return;
-      const Body &o = bodies[static_cast<std::size_t>(j)];
-      // Neither can come closer than this: caps bound their moves.
-      if (!can_touch(b, o)) return;
-      contacts[i].push_back({j, allowed_overlap(b, o)});
-    });
-    std::sort(contacts[i].begin(), contacts[i].end(),
-              [](const Contact &a, const Contact &c) { return a.j < c.j; });
-  }
-  return contacts;
+  host_.forward(rows_, 3, true);
+  for (ZoneBody &b : bodies)
+    if (!b.owned && b.movable)
+      b.x = Vec3{rows_[3 * b.local], rows_[3 * b.local + 1], rows_[3 * b.local + 2]};
+}
+
+void Zone::forward_flags()
+{
+  for (const ZoneBody &b : bodies)
+    if (b.owned) rows_[3 * b.local] = flags_of(b);
+  host_.forward(rows_, 1, false);
+  for (ZoneBody &b : bodies)
+    if (!b.owned) set_flags(b, static_cast<int>(rows_[3 * b.local]));
+}
+
+std::vector<int> Zone::copies_of(std::int64_t id) const
+{
+  const auto lo = std::lower_bound(by_id_.begin(), by_id_.end(), id,
+                                   [&](int k, std::int64_t v) { return bodies[k].id < v; });
+  std::vector<int> out;
+  for (auto it = lo; it != by_id_.end() && bodies[*it].id == id; ++it) out.push_back(*it);
+  return out;
 }
 
 }    // namespace reinforce

@@ -1,84 +1,84 @@
-// The bodies of a regrowth zone (docs/design.md, "Regrowth"): the seeds,
-// the movable matrix spheres and the frozen spheres around them, with the
-// pairs that can touch. Shared by the regrowth (reinforce_regrowth.cpp)
-// and its soft-sphere relaxation (reinforce_soft_relaxation.cpp).
+// The regrowth's zone on one process (docs/design.md, "Regrowth"): the
+// host's atoms near the seeds, owned and ghost, as bodies. Each process
+// moves the zone's spheres it owns and sees the others' as its ghosts,
+// refreshed by the host's forward communication. Every per-atom decision
+// (in the zone or not, its radius, its mobility) is made by the atom's
+// owner from its own coordinates and sent to the ghosts, so it is the same
+// for any process count.
 #pragma once
 
-#include "reinforce_particle.h"
+#include "reinforce_domain.h"
+#include "reinforce_host_hooks.h"
 #include "reinforce_vec3.h"
 
-#include <algorithm>
 #include <cstdint>
 #include <vector>
 
 namespace reinforce {
 
-struct Body {
-  Vec3 x, x0;
-  double R = 0;        // its own radius
-  double scale = 1;    // its radius now, over R (below 1 only while a seed grows)
-  double w = 0;        // mobility in the current growth: 1 at its seed, towards 0 at the edge
-  double cap = 0;      // largest distance from x0
+// A target the regrowth takes up: one left without a void (vacant, its
+// atom at its old centre) or one placed shrunk (its atom where the
+// relocation put it).
+struct Seed {
   std::int64_t id = 0;
-  bool seed = false, movable = false, rebar = false, present = true;
-  bool active = false;    // moves in the current growth
-  bool placed = false;    // a seed put back
-  // A seed placed shrunk by the relocation and its present shrunk sphere
-  // (the same atom): each other's index, else -1.
-  int twin = -1;
-  double w_zone = 0;    // mobility in the settling: 1 - (distance to the nearest seed) / width
-  int bar = -1;         // the nearest rebar sphere (a matrix sphere settles towards it)
+  Vec3 x;             // its old centre, in the box
+  double R = 0;       // its own radius
+  double r = 0;       // its radius now: 0 when vacant, else the shrunk radius
+  double depth = 0;   // its old centre to the nearest bar surface (< 0: inside a bar)
+  double inside = 0;  // its volume inside the bars
+  bool kept = false;  // grown back at its own radius (else deleted, or left shrunk)
 };
 
-struct Contact {
-  int j = 0;
-  // The pair's overlap at the start (pairs of matrix spheres): the most it
-  // may overlap as they move. The packing's own overlaps (a packing settled
-  // by DEM has one at every contact) are not the fix's: none gets worse,
-  // and the spheres that have them can still move.
-  double allowed = 0;
+// One copy of a host atom near the seeds.
+struct ZoneBody {
+  Vec3 x, x0;            // now, and at the start
+  double R = 0;          // its radius at full size (a kept shrunk seed: its own)
+  std::int64_t id = 0;
+  int local = -1;        // the host's index
+  bool owned = false;
+  bool rebar = false;    // of this fix's bars
+  bool present = true;   // false: a seed deleted or given up
+  bool movable = false;  // in the zone: its owner moves it
+  bool growing = false;  // a seed growing back (given up when it does not fit)
+  bool matrix = false;   // a sphere of the packing: what it overlapped at the start is allowed
+  double w = 0;          // owned movable: mobility, 1 at a seed, 0 at the zone's edge
+  double cap = 0;        // owned movable: the largest distance from x0
+  int bar = -1;          // owned movable matrix: its nearest rebar body, or -1
 };
 
-// The bodies of the zone of `seeds` (indices of Target particles of
-// `reads`) in id order (then place): the seeds; the matrix spheres of the
-// fix group within `width` of a seed, movable within their caps
-// (regrowth_policy::kMoveShare); everything else frozen; other Target particles
-// are vacant and left out. A seed that shares its id with a present
-// sphere (a target the relocation placed shrunk) is its twin. Each movable
-// matrix sphere knows its nearest rebar sphere.
-std::vector<Body> zone_bodies(const std::vector<Particle> &reads,
-                              const std::vector<std::size_t> &seeds, double width);
+// How wide the zone is and how far it reaches.
+struct ZoneShape {
+  double width = 0;       // a matrix sphere within this of a seed moves
+  double cap = 0;         // how far a sphere at a seed may move (0 at the zone's edge)
+  double reach = 0;       // bodies: the atoms within this of a seed
+  double pull_range = 0;  // a matrix sphere's bar: the nearest rebar sphere within this
+};
 
-// For each movable body, the bodies it can touch within the caps of both
-// (sorted), with the overlap the pair has at the start.
-std::vector<std::vector<Contact>> zone_contacts(const std::vector<Body> &bodies);
+class Zone {
+public:
+  // The bodies of the atoms `a` (after the host's refresh) within
+  // shape.reach of a seed (every process's, `seeds`, their `kept` decided).
+  // Collective.
+  Zone(HostHooks &host, const AtomArrays &a, const std::vector<Seed> &seeds,
+       const ZoneShape &shape, const Domain &domain);
 
-// Whether b and o can touch, each within its cap of where it started.
-inline bool can_touch(const Body &b, const Body &o)
-{
-  return norm(b.x0 - o.x0) < b.R + o.R + b.cap + o.cap;
-}
+  std::vector<ZoneBody> bodies;
+  std::vector<int> moving;    // the owned movable bodies, ascending
 
-// The overlap pair (b, o) may keep as they move (Contact::allowed): what
-// two matrix spheres overlapped at the start, none with a seed.
-inline double allowed_overlap(const Body &b, const Body &o)
-{
-  if (b.seed || o.seed) return 0;
-  return std::max(0.0, b.R + o.R - norm(b.x0 - o.x0));
-}
+  // The owned bodies' positions, or their flags (present, movable,
+  // growing), sent to their ghost copies. Collective.
+  void forward_positions();
+  void forward_flags();
+  // The bodies (owned or ghost) of atom `id` on this process.
+  std::vector<int> copies_of(std::int64_t id) const;
 
-// Its radius now.
-inline double radius(const Body &b)
-{
-  return b.R * b.scale;
-}
-
-// The direction from o to b at distance dist; for coincident centres one
-// fixed by the ids.
-inline Vec3 apart(const Body &b, const Body &o, double dist)
-{
-  if (dist > 1e-12 * (b.R + o.R)) return (1 / dist) * (b.x - o.x);
-  return Vec3{b.id < o.id ? -1.0 : 1.0, 0, 0};
-}
+private:
+  HostHooks &host_;
+  std::vector<double> rows_;    // the forward buffer: a row per host atom
+  std::vector<int> by_id_;      // bodies sorted by id
+  void decide_owned(const AtomArrays &a, const std::vector<Seed> &seeds, const ZoneShape &shape,
+                    const Domain &domain);
+  void find_bars(double range);
+};
 
 }    // namespace reinforce

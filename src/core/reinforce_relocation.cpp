@@ -195,10 +195,8 @@ Relocation relocate_targets(const std::vector<Particle> &all, const Settings &se
       stats.volume_after += ball_volume(scene.r(fresh));
       if (scene.r(fresh) < target.r * (1 - settings.tol)) {
         stats.shrunk++;
-        // grow balance rebuilds the zone of every target placed shrunk.
-        if (settings.grow_balance ||
-            scene.thickest_rebar_overlapping(target.x, target.r) <= kThinBar * target.r)
-          out.shrunk_by_thin.push_back({target.id, target.x, target.r});
+        // The regrowth takes up every target placed shrunk.
+        if (settings.regrow > 0) out.placed_shrunk.push_back({target.id, target.x, target.r});
       }
     } else {
       stats.unplaced++;

@@ -56,12 +56,8 @@ struct Push {
   std::int64_t id = 0;
   Vec3 dx;
 };
-// A target placed with a radius below its own although only bars thin
-// beside it crossed it (no rebar sphere it overlaps is larger than
-// kThinBar of its radius): it displaced little, and the regrowth tries it
-// again at its own radius near where it was. With grow balance, every
-// target placed shrunk is taken up again.
-constexpr double kThinBar = 0.5;
+// A target placed with a radius below its own: with the regrowth on, it
+// takes it up again, at its own radius.
 struct ShrunkTarget {
   std::int64_t id = 0;
   Vec3 x0;          // where it was (the frame of the target's copy)
@@ -70,7 +66,7 @@ struct ShrunkTarget {
 struct Relocation {
   std::vector<TargetResult> targets;           // in the order they were relocated
   std::vector<Push> pushes;                    // increasing id; none of the targets above
-  std::vector<ShrunkTarget> shrunk_by_thin;    // the targets above (grow balance: all shrunk)
+  std::vector<ShrunkTarget> placed_shrunk;     // the targets above (with the regrowth on)
 };
 
 // Relocates the Target particles for which `mine` is true (default: the

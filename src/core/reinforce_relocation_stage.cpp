@@ -25,8 +25,8 @@ StageResult RelocationStage::run(const std::vector<Particle> &reads,
 {
   const Relocation rel =
       relocate_targets(reads, settings_, domain_, unplaced_ == Unplaced::Keep, stats_, mine);
-  shrunk_by_thin_.insert(shrunk_by_thin_.end(), rel.shrunk_by_thin.begin(),
-                         rel.shrunk_by_thin.end());
+  placed_shrunk_.insert(placed_shrunk_.end(), rel.placed_shrunk.begin(),
+                         rel.placed_shrunk.end());
   return {records_of(rel, unplaced_), rel.targets.size()};
 }
 

@@ -30,7 +30,7 @@ public:
   StageResult run(const std::vector<Particle> &reads,
                   const std::function<bool(const Particle &)> &mine) override;
   // The targets this process placed shrunk across thin bars, so far.
-  const std::vector<ShrunkTarget> &shrunk_by_thin() const { return shrunk_by_thin_; }
+  const std::vector<ShrunkTarget> &placed_shrunk() const { return placed_shrunk_; }
 
 private:
   const Settings &settings_;
@@ -39,7 +39,7 @@ private:
   int classes_;
   double target_rmax_, class_width_, read_;
   Stats &stats_;
-  std::vector<ShrunkTarget> shrunk_by_thin_;
+  std::vector<ShrunkTarget> placed_shrunk_;
 };
 
 }    // namespace reinforce

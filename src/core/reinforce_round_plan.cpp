@@ -9,15 +9,8 @@
 
 namespace reinforce {
 
-void plan_rounds(HostHooks &host, double write, double read, const char *stage, Plan &plan)
+void raise_ghost_cutoff(HostHooks &host, double cutoff, const char *stage)
 {
-  const Domain &box = plan.box;
-  plan.lattice = make_block_lattice(box.lo, box.hi, box.periodic, write + read);
-  // The owner of a block's centre sees the whole block plus the read
-  // reach: how far a block reaches past a subdomain depends on where the
-  // subdomain's faces fall on the lattice, so the largest over processes.
-  const double beyond = host.max(plan.lattice.reach_beyond(box.sub_lo, box.sub_hi));
-  const double cutoff = beyond + read;
   if (!std::isfinite(cutoff))
     host.fail(std::string("Fix reinforce/invert: the reach of the ") + stage + " is not finite");
   const GhostCutoff ghosts = host.ensure_ghost_cutoff(cutoff);
@@ -28,6 +21,18 @@ void plan_rounds(HostHooks &host, double write, double read, const char *stage, 
                   ghosts.before, ghosts.after, stage);
     host.log(line);
   }
+}
+
+void plan_rounds(HostHooks &host, double write, double read, const char *stage, Plan &plan)
+{
+  const Domain &box = plan.box;
+  plan.lattice = make_block_lattice(box.lo, box.hi, box.periodic, write + read);
+  // The owner of a block's centre sees the whole block plus the read
+  // reach: how far a block reaches past a subdomain depends on where the
+  // subdomain's faces fall on the lattice, so the largest over processes.
+  const double beyond = host.max(plan.lattice.reach_beyond(box.sub_lo, box.sub_hi));
+  const double cutoff = beyond + read;
+  raise_ghost_cutoff(host, cutoff, stage);
   // The view needs no more than the cutoff past the subdomain, whatever
   // the host's ghosts hold: the results of the rounds reach this process
   // only from the processes that can change something within that

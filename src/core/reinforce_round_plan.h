@@ -22,6 +22,10 @@ struct Plan {
   double margin = 0;    // the view: atoms within this of a rebar sphere
 };
 
+// The ghost cutoff made at least `cutoff` on the host (logged when raised,
+// naming the stage), or an ERROR when it is not finite.
+void raise_ghost_cutoff(HostHooks &host, double cutoff, const char *stage);
+
 // The lattice for a stage whose unit of work writes within `write` and
 // reads within `read` of its particle, the ghost reach that needs (raised
 // on the host, and logged when raised), this process's view bounds and its

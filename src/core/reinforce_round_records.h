@@ -42,6 +42,10 @@ std::vector<RoundRecord> records_of(const Relocation &rel, Unplaced unplaced);
 // whole number of records, or with an unknown kind, is a programming error
 // (decode_records returns false).
 constexpr int kRecordDoubles = 7;
+// An atom ID as two doubles (its 32-bit halves), and back: false when the
+// two are not whole numbers below 2^32.
+void put_id(std::int64_t id, std::vector<double> &out);
+bool read_id(const double *in, std::int64_t &id);
 void encode_records(const std::vector<RoundRecord> &records, std::vector<double> &out);
 bool decode_records(const std::vector<double> &in, std::vector<RoundRecord> &out);
 

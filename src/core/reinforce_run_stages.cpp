@@ -1,9 +1,9 @@
 #include "reinforce_run_stages.h"
 
-#include "reinforce_regrowth_stage.h"
 #include "reinforce_relocation.h"
 #include "reinforce_relocation_stage.h"
 #include "reinforce_round_records.h"
+#include "reinforce_regrowth_policy.h"
 #include "reinforce_round_runner.h"
 #include "reinforce_view.h"
 
@@ -45,45 +45,26 @@ std::vector<ShrunkTarget> gather_shrunk(HostHooks &host, const std::vector<Shrun
   return out;
 }
 
-// The regrowth of the targets the relocation left pending, and of those it
-// placed shrunk across thin bars (`shrunk`, every process's: each is a
-// vacant target where it was, with its images, beside its shrunk sphere):
-// a view made again after the host's refresh (the relocation moved atoms
-// across subdomains), its own lattice and ghost reach.
-void regrow_pending(HostHooks &host, const Plan &relocation_plan, const AtomRanges &ranges,
-                    const std::vector<ShrunkTarget> &shrunk, Totals &totals)
+// The regrowth of the targets the relocation left pending and of those it
+// placed shrunk (`shrunk`, every process's), after the host's refresh with
+// the ghosts reaching what it reads.
+void regrow_pending(HostHooks &host, const Plan &plan, const AtomRanges &ranges,
+                    std::vector<ShrunkTarget> shrunk, Totals &totals)
 {
   const double start = host.wall_time();
-  Plan plan = relocation_plan;
-  const RegrowthReach reach =
-      regrowth_reach(plan.settings.regrow, ranges.matrix_rmax, ranges.largest);
-  plan_rounds(host, reach.write, reach.read, "regrowth", plan);
+  RegrowthInput in;
+  in.settings = plan.settings;
+  in.width = plan.settings.regrow;
+  in.matrix_rmin = ranges.matrix_rmin;
+  in.matrix_rmax = ranges.matrix_rmax;
+  in.largest = ranges.largest;
+  in.shrunk = std::move(shrunk);
+  raise_ghost_cutoff(host,
+                     regrowth_ghost_reach(in.matrix_rmax, in.largest, plan.settings.search),
+                     "regrowth");
   host.refresh();
-  const AtomArrays a = host.atoms();
-  std::vector<int> local;
-  std::vector<Particle> view = make_view(a, reach.read + 2 * ranges.largest, plan.domain, local);
-  for (const ShrunkTarget &t : shrunk) {
-    Particle p;
-    p.id = t.id;
-    p.r = t.r0;
-    p.role = Role::Target;
-    for (const Vec3 &image :
-         images_in_view(wrapped_into_box(t.x0, plan.domain), plan.domain, true)) {
-      p.x = image;
-      view.push_back(p);
-      local.push_back(-1);    // no atom of the host's: never owned
-    }
-  }
-  RegrowthStage regrowth(plan.settings, plan.domain, plan.lattice, plan.settings.regrow,
-                         ranges.matrix_rmax, ranges.largest, totals.regrowth);
-  std::vector<int> doomed;
-  const RoundsDone done =
-      run_rounds(host, regrowth, {plan.lattice, plan.box, plan.domain, plan.partners},
-                 std::move(view), local, a, doomed);
-  host.remove(doomed);
-  const double seeds =
-      host.sum(static_cast<double>(totals.regrowth.seeds + totals.regrowth.shrunk_seeds));
-  if (done.rounds > 0) log_schedule(host, "regrowth schedule", "targets", done, seeds);
+  in.domain = host.placement_domain();
+  regrow(host, in, totals.regrowth);
   totals.regrowth_seconds = host.max(host.wall_time() - start);
 }
 
@@ -114,7 +95,7 @@ void run_stages(HostHooks &host, const FixOptions &options, const Plan &plan,
   if (unplaced != Unplaced::Defer) return;
   const Stats &s = totals.stats;
   std::vector<ShrunkTarget> shrunk;
-  if (settings.size == SizeMode::Keep) shrunk = gather_shrunk(host, relocation.shrunk_by_thin());
+  if (settings.size == SizeMode::Keep) shrunk = gather_shrunk(host, relocation.placed_shrunk());
   if (host.sum(static_cast<double>(s.unplaced - s.displaced)) > 0 || !shrunk.empty())
     regrow_pending(host, plan, ranges, shrunk, totals);
 }
@@ -130,7 +111,9 @@ void fold_regrowth(Totals &t)
   s.shrunk -= g.shrunk_regrown;
   s.unplaced -= g.regrown;
   s.displaced += g.displaced;
-  s.volume_after += g.volume_regrown;
+  s.volume_after += g.volume_regrown + g.volume_unshrunk;
+  // What the shrunk targets get back was never removed (f_ID[12] counts
+  // the targets deleted or kept).
   s.volume_removed -= g.volume_regrown;
   t.relocation_max_overlap = s.max_overlap;
   s.max_overlap = std::max(s.max_overlap, g.max_overlap);
@@ -138,20 +121,28 @@ void fold_regrowth(Totals &t)
 
 std::string regrowth_line(const RegrowthStats &g, double seconds)
 {
-  char line[400];
+  char line[500];
   std::snprintf(line, sizeof line,
                 "fix reinforce/invert: regrowth: %lld targets without a void, %lld regrown at "
                 "their own radius, %lld deleted (%lld inside the bars); %lld placed shrunk taken "
                 "up, %lld regrown at their own radius; %lld matrix spheres moved (largest %.2f "
-                "rmin), %lld sweeps, max overlap %.2e rmin (%lld spheres above %.0e of the "
-                "smaller radius), %.3f s\n",
+                "rmin), %lld steps, max overlap %.2e rmin (%lld spheres above %.0e of the "
+                "smaller radius), %.3f s",
                 static_cast<long long>(g.seeds), static_cast<long long>(g.regrown),
                 static_cast<long long>(g.deleted), static_cast<long long>(g.displaced),
                 static_cast<long long>(g.shrunk_seeds), static_cast<long long>(g.shrunk_regrown),
                 static_cast<long long>(g.moved), g.max_move, static_cast<long long>(g.sweeps),
                 g.max_overlap, static_cast<long long>(g.inexact), regrowth_policy::kRegrowthExact,
                 seconds);
-  return line;
+  std::string out = line;
+  if (g.jammed) {
+    std::snprintf(line, sizeof line,
+                  "; the zone jammed at %.3f of the radii and went back to the relocation's "
+                  "scene",
+                  g.jam_scale);
+    out += line;
+  }
+  return out + "\n";
 }
 
 }    // namespace reinforce

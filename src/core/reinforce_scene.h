@@ -89,17 +89,6 @@ public:
     return best;
   }
 
-  // The largest radius of a rebar sphere that sphere (x, r) overlaps (0:
-  // none).
-  double thickest_rebar_overlapping(Vec3 x, double r) const
-  {
-    double largest = 0;
-    grid_.for_each_near(x, r + largest_r_, [&](int b) {
-      if (rebar_[b] && norm(x_[b] - x) < r + r_[b]) largest = std::max(largest, r_[b]);
-    });
-    return largest;
-  }
-
   // Volume fraction of sphere (x, r) inside the union of the rebar spheres.
   double fraction_in_rebar(Vec3 x, double r) const
   {

@@ -24,8 +24,9 @@ struct Settings {
   double push = 0;    // Keep: largest displacement of a pushed sphere (0: no pushing)
   double displaced =
       0.5;    // a target with at least this volume fraction inside the bars is deleted
-  // The width of the zone regrown around a target the relocation left
-  // without a place (reinforce_regrowth.h); 0: none, such a target is deleted.
+  // The width of the zone regrown around the targets the relocation left
+  // without a void or placed shrunk (reinforce_regrowth.h); 0: none, such a
+  // target is deleted (or left shrunk).
   double regrow = 0;
   // The zone of a block rebuilt around all of its seeds, their count from
   // the volume balance (`grow balance`, the fix's default: make_settings).

@@ -1,169 +1,258 @@
 #include "reinforce_soft_relaxation.h"
 
-#include "reinforce_boundaries.h"
 #include "reinforce_cell_grid.h"
+#include "reinforce_exact_sum.h"
 #include "reinforce_regrowth_policy.h"
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
+#include <tuple>
 
 namespace reinforce {
 
 using namespace regrowth_policy;
 
-SoftRelaxation::SoftRelaxation(std::vector<Body> &bodies, const std::vector<std::size_t> &active,
-                               const Domain &domain, double tol)
-    : bodies_(bodies), active_(active), domain_(domain), tol_(tol)
+namespace {
+
+// The direction from o to b at distance dist; for coincident centres one
+// fixed by the ids (the same on every process).
+Vec3 apart(const ZoneBody &b, const ZoneBody &o, double dist)
 {
+  if (dist > 1e-12 * (b.R + o.R)) return (1 / dist) * (b.x - o.x);
+  return Vec3{b.id < o.id ? -1.0 : 1.0, 0, 0};
 }
 
-// The lists' skin from the largest movable sphere, and room for a list per
-// body, once the zone has its bodies.
-void SoftRelaxation::size_lists()
+}    // namespace
+
+SoftRelaxation::SoftRelaxation(HostHooks &host, Zone &zone, const Domain &domain, double tol,
+                               double rmin, double rmax)
+    : host_(host), zone_(zone), domain_(domain), tol_(tol), rmin_(rmin), skin_(kSkin * rmax),
+      step_max_(kFireStep * rmax)
 {
-  if (near_.size() == bodies_.size()) return;
-  double largest = 0;
-  largest_ = 0;
-  for (const Body &b : bodies_) {
-    if (b.movable) largest = std::max(largest, b.R);
-    largest_ = std::max(largest_, b.R);
+  const std::vector<ZoneBody> &bodies = zone_.bodies;
+  std::vector<int> order(bodies.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int p, int q) {
+    const ZoneBody &a = bodies[p], &b = bodies[q];
+    return std::tie(a.id, a.x0.x, a.x0.y, a.x0.z) < std::tie(b.id, b.x0.x, b.x0.y, b.x0.z);
+  });
+  rank_.resize(bodies.size());
+  for (std::size_t k = 0; k < order.size(); ++k) rank_[order[k]] = static_cast<int>(k);
+  const std::size_t n = zone_.moving.size();
+  slot_.assign(bodies.size(), -1);
+  for (std::size_t m = 0; m < n; ++m) slot_[static_cast<std::size_t>(zone_.moving[m])] = static_cast<int>(m);
+  near_.assign(n, {});
+  built_.assign(n, Vec3{});
+  v_.assign(n, Vec3{});
+  f_.assign(n, Vec3{});
+}
+
+// Each moving body's neighbours: the present bodies within both radii,
+// the skin and a pad of it, in (id, place) order, with what the pair
+// overlapped at the start when both are spheres of the packing.
+void SoftRelaxation::build_lists()
+{
+  const std::vector<ZoneBody> &bodies = zone_.bodies;
+  double largest = 0, movable = 0;
+  for (const ZoneBody &b : bodies) {
+    largest = std::max(largest, b.R);
+    if (b.movable) movable = std::max(movable, b.R);
   }
-  skin_ = kSkin * largest;
-  near_.assign(bodies_.size(), {});
-  built_.assign(bodies_.size(), Vec3{});
+  const double margin = skin_ + kPad * movable;
+  CellGrid grid(2 * movable + margin);
+  for (std::size_t k = 0; k < bodies.size(); ++k)
+    if (bodies[k].present) grid.insert(bodies[k].x, static_cast<int>(k));
+  for (std::size_t m = 0; m < zone_.moving.size(); ++m) {
+    const int i = zone_.moving[m];
+    const ZoneBody &b = bodies[static_cast<std::size_t>(i)];
+    std::vector<Neighbour> &list = near_[m];
+    list.clear();
+    built_[m] = b.x;
+    if (!b.present) continue;
+    grid.for_each_near(b.x, b.R + largest + margin, [&](int j) {
+      const ZoneBody &o = bodies[static_cast<std::size_t>(j)];
+      if (j == i || !(norm(b.x - o.x) < b.R + o.R + margin)) return;
+      const double allowed =
+          b.matrix && o.matrix ? std::max(0.0, pair_overlap(b.x0, b.R, o.x0, o.R, 0)) : 0;
+      list.push_back({j, allowed});
+    });
+    std::sort(list.begin(), list.end(),
+              [&](const Neighbour &p, const Neighbour &q) { return rank_[p.j] < rank_[q.j]; });
+  }
+  moved_ = 0;
+  stale_ = false;
 }
 
-// The forces on the active spheres: their overlaps (harmonic, unit
-// stiffness) and the pull towards their bar, if any. Returns the largest
-// overlap, over the smaller radius.
-double SoftRelaxation::forces(std::vector<Vec3> &f) const
+// The forces on the moving bodies (their overlaps, harmonic, unit
+// stiffness; the pull towards their bar). Returns the largest overlap
+// here, over the smaller radius.
+double SoftRelaxation::forces()
 {
+  const std::vector<ZoneBody> &bodies = zone_.bodies;
   double worst = 0;
-  for (std::size_t i : active_) {
-    const Body &b = bodies_[i];
-    const double ri = radius(b);
+  for (std::size_t m = 0; m < zone_.moving.size(); ++m) {
+    const ZoneBody &b = bodies[static_cast<std::size_t>(zone_.moving[m])];
     Vec3 F;
-    for (const Contact &c : near_[i]) {
-      const Body &o = bodies_[static_cast<std::size_t>(c.j)];
-      if (!o.present) continue;
-      const double rj = radius(o);
-      double sum = ri + rj - c.allowed;    // contact, less the pair's own overlap
-      // Padded between two moving spheres only: one held by its cap or a
-      // wall against a frozen sphere it touches could never make the pad.
-      if (pad_ > 0 && o.active) sum += pad_ * std::min(ri, rj);
-      const double d2 = norm2(b.x - o.x);
-      if (d2 >= sum * sum) continue;
-      const double dist = std::sqrt(d2);
-      const double delta = sum - dist;
-      worst = std::max(worst, delta / std::min(ri, rj));
-      F = F + delta * apart(b, o, dist);
+    if (b.present) {
+      const double ri = radius(b);
+      for (const Neighbour &n : near_[m]) {
+        const ZoneBody &o = bodies[static_cast<std::size_t>(n.j)];
+        if (!o.present) continue;
+        const double rj = radius(o);
+        double contact = ri + rj - n.allowed;
+        if (pad_ > 0 && o.movable) contact += pad_ * std::min(ri, rj);
+        const double d2 = norm2(b.x - o.x);
+        if (d2 >= contact * contact) continue;
+        const double dist = std::sqrt(d2);
+        const double delta = contact - dist;
+        worst = std::max(worst, delta / std::min(ri, rj));
+        F = F + delta * apart(b, o, dist);
+      }
+      if (pull_ > 0 && b.bar >= 0) {
+        const Vec3 to_bar = bodies[static_cast<std::size_t>(b.bar)].x - b.x;
+        const double d = norm(to_bar);
+        if (d > 0) F = F + (pull_ * b.R * b.w / d) * to_bar;
+      }
     }
-    if (pull_ > 0 && !b.seed && b.bar >= 0) {
-      const Vec3 to_bar = bodies_[static_cast<std::size_t>(b.bar)].x - b.x;
-      const double n = norm(to_bar);
-      if (n > 0) F = F + (pull_ * b.R * b.w_zone / n) * to_bar;
-    }
-    f[i] = F;
+    f_[m] = F;
   }
   return worst;
 }
 
-// The neighbour lists of the active spheres: the present spheres within
-// the two radii and skin_ of them that can touch them (can_touch), by
-// index; found in a cell grid of where the spheres are now
-// (a zone's possible contacts reach across the caps: many times more).
-void SoftRelaxation::build_near()
+// FIRE's sums and the largest overlap and move, over every process; the
+// sums exact, so the same whatever the partition.
+double SoftRelaxation::reduce(double worst, double &power, double &vnorm, double &fnorm)
 {
-  CellGrid grid(2 * largest_ + skin_);
-  for (std::size_t k = 0; k < bodies_.size(); ++k)
-    if (bodies_[k].present) grid.insert(bodies_[k].x, static_cast<int>(k));
-  for (std::size_t i : active_) {
-    near_[i].clear();
-    const Body &b = bodies_[i];
-    grid.for_each_near(b.x, b.R + largest_ + skin_, [&](int j) {
-      const Body &o = bodies_[static_cast<std::size_t>(j)];
-      if (static_cast<std::size_t>(j) == i || !(norm(b.x - o.x) < b.R + o.R + skin_) ||
-          !can_touch(b, o))
-        return;
-      near_[i].push_back({j, allowed_overlap(b, o)});
-    });
-    std::sort(near_[i].begin(), near_[i].end(),
-              [](const Contact &a, const Contact &c) { return a.j < c.j; });
-    built_[i] = b.x;
+  const double unit = rmin_ * rmin_;
+  ExactSum p(unit), vv(unit), ff(unit);
+  for (std::size_t m = 0; m < f_.size(); ++m) {
+    p.add(dot(f_[m], v_[m]));
+    vv.add(norm2(v_[m]));
+    ff.add(norm2(f_[m]));
+  }
+  std::vector<double> sums;
+  for (const ExactSum *s : {&p, &vv, &ff}) {
+    const auto limbs = s->limbs();
+    sums.insert(sums.end(), limbs.begin(), limbs.end());
+  }
+  host_.sum_each(sums);
+  power = ExactSum::from_limbs(&sums[0], unit);
+  vnorm = std::sqrt(std::max(0.0, ExactSum::from_limbs(&sums[ExactSum::kLimbs], unit)));
+  fnorm = std::sqrt(std::max(0.0, ExactSum::from_limbs(&sums[2 * ExactSum::kLimbs], unit)));
+  double moved = 0;
+  for (std::size_t m = 0; m < zone_.moving.size(); ++m)
+    moved = std::max(moved, norm(zone_.bodies[zone_.moving[m]].x - built_[m]));
+  std::vector<double> maxima{worst, moved};
+  host_.max_each(maxima);
+  moved_ = maxima[1];
+  return maxima[0];
+}
+
+// One step of each moving body: within its cap (sliding along it), along
+// the box faces, and not where the walls or region refuse it.
+void SoftRelaxation::move(double dt)
+{
+  for (std::size_t m = 0; m < zone_.moving.size(); ++m) {
+    ZoneBody &b = zone_.bodies[static_cast<std::size_t>(zone_.moving[m])];
+    if (!b.present) continue;
+    Vec3 &v = v_[m];
+    v = v + dt * f_[m];
+    Vec3 d = dt * v;
+    const double dn = norm(d);
+    if (dn > kFireStep * b.R) d = (kFireStep * b.R / dn) * d;
+    Vec3 to = b.x + d;
+    const double off = norm(to - b.x0);
+    if (off > b.cap) {
+      const Vec3 n = (1 / off) * (to - b.x0);
+      to = b.x0 + b.cap * n;
+      const double out = dot(v, n);
+      if (out > 0) v = v - out * n;
+    }
+    for (int a = 0; a < 3; ++a) {
+      if (domain_.periodic[a]) continue;
+      const double lo = domain_.lo[a] + b.R, hi = domain_.hi[a] - b.R;
+      if (to[a] < lo && b.x[a] >= lo) {
+        to[a] = lo;
+        v[a] = 0;
+      } else if (to[a] > hi && b.x[a] <= hi) {
+        to[a] = hi;
+        v[a] = 0;
+      }
+    }
+    if (!admissible(b.x, to, b.R, domain_, tol_)) {
+      v = Vec3{};
+      continue;
+    }
+    b.x = to;
   }
 }
 
-// FIRE over the active spheres until the largest overlap is at most
-// `done` (over the smaller radius), at most `iters` steps. A sphere
-// stays within its cap (sliding along it), slides along the box faces,
-// and does not make a move the walls or region refuse. Returns the
-// largest overlap.
-double SoftRelaxation::run(int iters, double done, std::int64_t &steps)
+double SoftRelaxation::run(int steps, double done)
 {
   double dt = kFireDt, alpha = kFireAlpha;
   int positive = 0;
-  size_lists();
-  std::vector<Vec3> f(bodies_.size()), v(bodies_.size());
-  build_near();
-  double worst = forces(f);
-  for (int it = 0; it < iters && worst > done; ++it) {
-    steps++;
-    double power = 0, vn = 0, fn = 0;
-    for (std::size_t i : active_) {
-      power += dot(f[i], v[i]);
-      vn += norm2(v[i]);
-      fn += norm2(f[i]);
-    }
-    vn = std::sqrt(vn);
-    fn = std::sqrt(fn);
+  std::fill(v_.begin(), v_.end(), Vec3{});
+  if (stale_) build_lists();
+  double power = 0, vn = 0, fn = 0;
+  double worst = reduce(forces(), power, vn, fn);
+  for (int it = 0; it < steps && worst > done; ++it) {
+    steps_++;
     if (power > 0) {
       if (fn > 0)
-        for (std::size_t i : active_) v[i] = (1 - alpha) * v[i] + (alpha * vn / fn) * f[i];
+        for (std::size_t m = 0; m < v_.size(); ++m)
+          v_[m] = (1 - alpha) * v_[m] + (alpha * vn / fn) * f_[m];
       if (++positive > kFireDelay) {
         dt = std::min(dt * kFireGrow, kFireDtMax);
         alpha *= kFireAlphaDecay;
       }
     } else {
-      for (std::size_t i : active_) v[i] = Vec3{};
+      std::fill(v_.begin(), v_.end(), Vec3{});
       dt *= kFireShrink;
       alpha = kFireAlpha;
       positive = 0;
     }
-    bool rebuild = false;
-    for (std::size_t i : active_) {
-      Body &b = bodies_[i];
-      v[i] = v[i] + dt * f[i];
-      Vec3 d = dt * v[i];
-      const double dn = norm(d);
-      if (dn > kFireStep * b.R) d = (kFireStep * b.R / dn) * d;
-      Vec3 to = b.x + d;
-      const double off = norm(to - b.x0);
-      if (off > b.cap) {
-        const Vec3 n = (1 / off) * (to - b.x0);
-        to = b.x0 + b.cap * n;
-        const double out = dot(v[i], n);
-        if (out > 0) v[i] = v[i] - out * n;
-      }
-      for (int a = 0; a < 3; ++a) {
-        if (domain_.periodic[a]) continue;
-        const double lo = domain_.lo[a] + b.R, hi = domain_.hi[a] - b.R;
-        if (to[a] < lo && b.x[a] >= lo) {
-          to[a] = lo;
-          v[i][a] = 0;
-        } else if (to[a] > hi && b.x[a] <= hi) {
-          to[a] = hi;
-          v[i][a] = 0;
-        }
-      }
-      if (!admissible(b.x, to, b.R, domain_, tol_)) {
-        v[i] = Vec3{};
-        continue;
-      }
-      b.x = to;
-      if (norm(b.x - built_[i]) > 0.5 * skin_) rebuild = true;
+    move(dt);
+    zone_.forward_positions();
+    // Every process knows the largest move since the lists: they stay
+    // right while no sphere can have moved half the skin.
+    if (moved_ + step_max_ > 0.5 * skin_) build_lists();
+    worst = reduce(forces(), power, vn, fn);
+  }
+  return worst;
+}
+
+double SoftRelaxation::deepest(int k) const
+{
+  if (slot_[static_cast<std::size_t>(k)] < 0) return 0;
+  const std::size_t m = static_cast<std::size_t>(slot_[static_cast<std::size_t>(k)]);
+  const ZoneBody &b = zone_.bodies[static_cast<std::size_t>(k)];
+  double most = 0;
+  for (const Neighbour &n : near_[m]) {
+    const ZoneBody &o = zone_.bodies[static_cast<std::size_t>(n.j)];
+    if (!o.present) continue;
+    const double ri = radius(b), rj = radius(o);
+    most = std::max(most, pair_overlap(b.x, ri, o.x, rj, n.allowed) / std::min(ri, rj));
+  }
+  return most;
+}
+
+double SoftRelaxation::worst_at_full_size(double above, std::int64_t &count) const
+{
+  double worst = 0;
+  count = 0;
+  for (std::size_t m = 0; m < zone_.moving.size(); ++m) {
+    const ZoneBody &b = zone_.bodies[static_cast<std::size_t>(zone_.moving[m])];
+    if (!b.present) continue;
+    bool exact = true;
+    for (const Neighbour &n : near_[m]) {
+      const ZoneBody &o = zone_.bodies[static_cast<std::size_t>(n.j)];
+      if (!o.present) continue;
+      const double overlap = pair_overlap(b.x, b.R, o.x, o.R, n.allowed);
+      worst = std::max(worst, overlap / rmin_);
+      exact = exact && !(overlap > above * std::min(b.R, o.R));
     }
-    if (rebuild) build_near();
-    worst = forces(f);
+    if (!exact) count++;
   }
   return worst;
 }

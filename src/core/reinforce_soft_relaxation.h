@@ -1,12 +1,15 @@
-// Soft-sphere relaxation of a regrowth zone's active spheres (FIRE: the
-// fast inertial relaxation engine of Bitzek et al., on a harmonic overlap
-// energy of unit stiffness and mass), optionally pulled towards their
-// bars. Its moves keep each sphere within its cap and refuse what the box
-// faces, walls or region refuse; what it leaves is an overlap to be
-// checked (or projected out) by the caller.
+// Soft-sphere relaxation of the regrowth's zone (FIRE: the fast inertial
+// relaxation engine of Bitzek et al., on a harmonic overlap energy of unit
+// stiffness and mass), every process moving its own zone spheres at once
+// (docs/design.md, "Regrowth"). The same for any process count: each
+// sphere's force is summed over its neighbours in (id, place) order, the
+// global sums FIRE needs are exact (ExactSum), its other decisions come
+// from maxima. A move keeps a sphere within its cap and refuses what the
+// box faces, walls or region refuse.
 #pragma once
 
 #include "reinforce_domain.h"
+#include "reinforce_host_hooks.h"
 #include "reinforce_regrowth_zone.h"
 
 #include <cstdint>
@@ -14,41 +17,68 @@
 
 namespace reinforce {
 
+// The overlap of spheres (xi, ri) and (xj, rj) beyond `allowed`: the one
+// pair test of the regrowth (positive: they overlap).
+inline double pair_overlap(Vec3 xi, double ri, Vec3 xj, double rj, double allowed)
+{
+  return ri + rj - allowed - norm(xi - xj);
+}
+
 class SoftRelaxation {
 public:
-  // Over `bodies` (those `active` move; each against the bodies it can
-  // touch, can_touch), inside `domain`; tol as in Settings.
-  SoftRelaxation(std::vector<Body> &bodies, const std::vector<std::size_t> &active,
-                 const Domain &domain, double tol);
+  // Over the zone's bodies (its owned movable ones move); rmin, rmax: the
+  // matrix's radius range (the unit of overlaps and the lists' skin).
+  SoftRelaxation(HostHooks &host, Zone &zone, const Domain &domain, double tol, double rmin,
+                 double rmax);
 
-  // The pull towards a sphere's bar, as a share of its radius times its
-  // mobility (0: none).
+  // The movable spheres' radii as a share of their own.
+  void set_scale(double scale) { scale_ = scale; }
+  // The pull towards a matrix sphere's bar, as a share of its radius times
+  // its mobility (0: none).
   void set_pull(double pull) { pull_ = pull; }
-
-  // Each pair's contact distance lengthened by `pad` of its smaller radius
-  // (0: none): relaxed to overlaps below the pad, the true radii clear.
+  // Each pair of movable spheres' contact distance lengthened by `pad` of
+  // its smaller radius (0: none).
   void set_pad(double pad) { pad_ = pad; }
+  // The bodies' flags changed (a seed given up): the lists are made again.
+  void flags_changed() { stale_ = true; }
 
-  // At most `iters` steps, until the largest overlap (over the smaller
-  // radius) is at most `done`; adds the steps to `steps`. Returns the
-  // largest overlap.
-  double run(int iters, double done, std::int64_t &steps);
+  // At most `steps` FIRE steps, until the largest overlap (over the
+  // smaller radius, every process's) is at most `done`. Returns it.
+  // Collective.
+  double run(int steps, double done);
+
+  // The deepest overlap of owned body k now (over the smaller radius).
+  double deepest(int k) const;
+  // Over the owned movable bodies at full size: the largest overlap beyond
+  // what each pair overlapped at the start (over rmin), and how many of
+  // them overlap by more than `above` of the smaller radius. Not collective.
+  double worst_at_full_size(double above, std::int64_t &count) const;
+
+  std::int64_t steps() const { return steps_; }
 
 private:
-  std::vector<Body> &bodies_;
-  const std::vector<std::size_t> &active_;
+  struct Neighbour {
+    int j;
+    double allowed;    // what the pair overlapped at the start (two matrix spheres)
+  };
+  HostHooks &host_;
+  Zone &zone_;
   const Domain &domain_;
-  double tol_;
-  double pull_ = 0;
-  double pad_ = 0;
-  double skin_ = 0;                           // of the neighbour lists
-  double largest_ = 0;                        // the largest radius of a body
-  std::vector<std::vector<Contact>> near_;    // an active sphere's neighbours
-  std::vector<Vec3> built_;                   // where it was when they were found
+  double tol_, rmin_, skin_, step_max_;
+  double scale_ = 1, pull_ = 0, pad_ = 0;
+  bool stale_ = true;
+  std::int64_t steps_ = 0;
+  double moved_ = 0;                          // the largest move since the lists (global)
+  std::vector<std::vector<Neighbour>> near_;  // per moving body
+  std::vector<Vec3> built_, v_, f_;           // per moving body
+  std::vector<int> rank_;                     // bodies' (id, place) order
+  std::vector<int> slot_;                     // a body's index in `moving`, or -1
 
-  void size_lists();
-  double forces(std::vector<Vec3> &f) const;
-  void build_near();
+  double radius(const ZoneBody &b) const { return b.movable ? scale_ * b.R : b.R; }
+  void build_lists();
+  double forces();
+  void move(double dt);
+  double reduce(double worst, double &power, double &vnorm, double &fnorm);
 };
 
 }    // namespace reinforce

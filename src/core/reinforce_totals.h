@@ -41,7 +41,7 @@ struct TotalsField {
 };
 
 constexpr int kOutputSize = 28;
-constexpr std::size_t kTotalsFields = 35;
+constexpr std::size_t kTotalsFields = 38;
 const std::array<TotalsField, kTotalsFields> &totals_fields();
 
 // The fix's global vector, f_ID[1] to f_ID[27], in the order of the

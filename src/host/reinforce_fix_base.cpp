@@ -21,6 +21,7 @@
 #include "reinforce_host_api.h"
 
 #include "reinforce_fix_options.h"
+#include "reinforce_host_hooks.h"
 #include "reinforce_invocation.h"
 
 #include <algorithm>
@@ -43,7 +44,7 @@ ReinforceFixBase::ReinforceFixBase(LAMMPS *lmp, int narg, char **arg)
   size_vector = reinforce::kOutputSize;
   global_freq = 1;
   extvector = 0;
-  comm_forward = 1;
+  comm_forward = reinforce::kForwardWidth;
   create_attribute = 1;
   if (options.every > 0) force_reneighbor = 1;
   next_reneighbor = -1;
@@ -309,6 +310,9 @@ FixHostView ReinforceFixBase::host_view()
   v.walls_in_view = [this] { return walls_in_view(); };
   v.build_neighbour_lists = [this](double cutoff) { return build_neighbour_lists(cutoff); };
   v.neighbours = [this](int local, std::vector<int> &out) { neighbours(local, out); };
+  v.forward = [this](std::vector<double> &values, int width, bool positions) {
+    forward_values(values, width, positions);
+  };
   v.moved = [this](int i) {
     for (Anchors &a : anchors)
       if (atom->mask[i] & a.bit) a.moved.insert(atom->tag[i]);
@@ -402,14 +406,46 @@ int ReinforceFixBase::unpack_exchange(int nlocal, double *buf)
   return 1;
 }
 
-void ReinforceFixBase::pack_pending(int n, const int *list, double *buf) const
+// The forward communication sends the pending flags, or the rows of
+// values the engine asked to send (forward_values): `width` per atom, the
+// first three shifted by the box length for a periodic image when they are
+// a position (as the host shifts its ghosts' coordinates). Returns the
+// values per atom.
+int ReinforceFixBase::pack_forward(int n, const int *list, double *buf, int pbc_flag,
+                                   const int *pbc) const
 {
-  for (int k = 0; k < n; ++k) buf[k] = pending[list[k]];
+  if (!rows) {
+    for (int k = 0; k < n; ++k) buf[k] = pending[list[k]];
+    return 1;
+  }
+  double shift[3] = {0, 0, 0};
+  if (rows_are_positions && pbc_flag) {
+    shift[0] = pbc[0] * domain->xprd;
+    shift[1] = pbc[1] * domain->yprd;
+    shift[2] = pbc[2] * domain->zprd;
+  }
+  for (int k = 0; k < n; ++k)
+    for (int c = 0; c < row_width; ++c)
+      buf[k * row_width + c] = rows[list[k] * row_width + c] + (c < 3 ? shift[c] : 0.0);
+  return row_width;
 }
 
-void ReinforceFixBase::unpack_pending(int n, int first, const double *buf)
+void ReinforceFixBase::unpack_forward(int n, int first, const double *buf)
 {
-  for (int k = 0; k < n; ++k) pending[first + k] = static_cast<int>(buf[k]);
+  if (!rows) {
+    for (int k = 0; k < n; ++k) pending[first + k] = static_cast<int>(buf[k]);
+    return;
+  }
+  std::copy(buf, buf + n * row_width, rows + first * row_width);
+}
+
+void ReinforceFixBase::forward_values(std::vector<double> &values, int width, bool positions)
+{
+  rows = values.data();
+  row_width = width;
+  rows_are_positions = positions;
+  reinforce::host_api::forward_comm(comm, this, 0);
+  rows = nullptr;
 }
 
 double ReinforceFixBase::memory_usage()

@@ -60,9 +60,10 @@ protected:
   // atom style, box, groups, region, then check_host().
   void check_setup();
   bool done() const;    // N = 0, relocated once: nothing more to do or check
-  // The flags' forward communication, for the host's own hook names.
-  void pack_pending(int n, const int *list, double *buf) const;
-  void unpack_pending(int n, int first, const double *buf);
+  // The forward communication (the pending flags, or the engine's rows),
+  // for the host's own hook names: pack_forward returns the values per atom.
+  int pack_forward(int n, const int *list, double *buf, int pbc_flag, const int *pbc) const;
+  void unpack_forward(int n, int first, const double *buf);
   // One ERROR line (on every process; does not return), one WARNING line
   // (rank 0), one log line (rank 0, screen and log file).
   void fail(const char *file, int line, const std::string &message);
@@ -112,8 +113,15 @@ private:
   };
   std::vector<Anchors> anchors;
 
+  // The rows the forward communication sends instead of the flags (null:
+  // the flags), their width and whether the first three are a position.
+  double *rows = nullptr;
+  int row_width = 1;
+  bool rows_are_positions = false;
+
   void invoke();
   FixHostView host_view();
+  void forward_values(std::vector<double> &values, int width, bool positions);
   bool shares_matrix_atoms(const Fix &other);
   void check_bodies();
   void check_walls();

@@ -48,6 +48,7 @@ struct FixHostView {
   std::function<std::shared_ptr<const reinforce::Boundaries>()> walls_in_view;
   std::function<bool(double cutoff)> build_neighbour_lists;
   std::function<void(int local, std::vector<int> &out)> neighbours;
+  std::function<void(std::vector<double> &, int, bool)> forward;    // HostHooks::forward
   std::function<void(int local)> moved;    // after an atom got its new place
   std::function<void(const std::string &)> log, warn, fail;
 };
@@ -66,6 +67,10 @@ public:
   reinforce::AtomArrays atoms() override;
   void set_pending(int local, bool flag) override;
   void forward_pending() override;
+  void forward(std::vector<double> &values, int width, bool positions) override
+  {
+    v.forward(values, width, positions);
+  }
   reinforce::GhostCutoff ensure_ghost_cutoff(double reach) override;
   void restore_ghost_cutoff() override;
   reinforce::Domain placement_domain() override;

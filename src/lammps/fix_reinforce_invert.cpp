@@ -101,15 +101,14 @@ bool FixReinforceInvert::in_body(Fix &other, int i)
 }
 
 // LAMMPS expects the number of values sent back.
-int FixReinforceInvert::pack_forward_comm(int n, int *list, double *buf, int, int *)
+int FixReinforceInvert::pack_forward_comm(int n, int *list, double *buf, int pbc_flag, int *pbc)
 {
-  pack_pending(n, list, buf);
-  return n;
+  return n * pack_forward(n, list, buf, pbc_flag, pbc);
 }
 
 void FixReinforceInvert::unpack_forward_comm(int n, int first, double *buf)
 {
-  unpack_pending(n, first, buf);
+  unpack_forward(n, first, buf);
 }
 
 #if REINFORCE_LAMMPS_SOURCE_BUILD

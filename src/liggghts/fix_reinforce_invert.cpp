@@ -110,13 +110,12 @@ double FixReinforceInvert::ghost_cutoff_for(double reach)
 }
 
 // LIGGGHTS expects the number of values per atom back.
-int FixReinforceInvert::pack_comm(int n, int *list, double *buf, int, int *)
+int FixReinforceInvert::pack_comm(int n, int *list, double *buf, int pbc_flag, int *pbc)
 {
-  pack_pending(n, list, buf);
-  return 1;
+  return pack_forward(n, list, buf, pbc_flag, pbc);
 }
 
 void FixReinforceInvert::unpack_comm(int n, int first, double *buf)
 {
-  unpack_pending(n, first, buf);
+  unpack_forward(n, first, buf);
 }
