@@ -1,6 +1,5 @@
 // The fix's arguments, rounds and summary line (host independent).
 #include "reinforce_fix_options.h"
-#include "reinforce_regrowth_policy.h"
 #include "reinforce_schedule.h"
 
 #include <gtest/gtest.h>
@@ -250,15 +249,14 @@ TEST(FixOptions, WallsErrorsNameTheProblem)
             I + "walls must be 'check' or 'ignore', got 'maybe'");
 }
 
-// regrow: on by default with size keep (grow balance: kBalanceWidth matrix
-// radii), not with size fit
-// or unplaced keep unless asked (an error with unplaced keep); yes gives
-// the same, a length sets the zone's width (capped by the box); no turns
-// it off.
+// regrow: on by default with size keep (a zone 8 matrix radii wide, as
+// the doc page says), not with size fit or unplaced keep unless asked (an
+// error with unplaced keep); yes gives the same, a length sets the zone's
+// width (capped by the box); no turns it off.
 TEST(FixOptions, RegrowWidthOrNo)
 {
   EXPECT_DOUBLE_EQ(make_settings(parse_fix_arguments({"0", "bars"}), 0.1, 0.3, 100).regrow,
-                   regrowth_policy::kBalanceWidth * 0.3);
+                   8 * 0.3);
   EXPECT_EQ(
       make_settings(parse_fix_arguments({"0", "bars", "unplaced", "keep"}), 0.1, 0.3, 100).regrow,
       0);
@@ -268,7 +266,7 @@ TEST(FixOptions, RegrowWidthOrNo)
             0);    // the seed paper's mode, unless asked
   EXPECT_DOUBLE_EQ(
       make_settings(parse_fix_arguments({"0", "bars", "regrow", "yes"}), 0.1, 0.3, 100).regrow,
-      regrowth_policy::kBalanceWidth * 0.3);
+      8 * 0.3);
   EXPECT_EQ(
       make_settings(parse_fix_arguments({"0", "bars", "regrow", "0.5"}), 0.1, 0.3, 100).regrow,
       0.5);
@@ -298,61 +296,31 @@ TEST(FixOptions, RegrowWidthOrNo)
   EXPECT_NO_THROW(parse_fix_arguments({"0", "bars", "regrow", "no", "unplaced", "keep"}));
 }
 
-// grow: the zone rebuilt by the volume balance (the default, kBalanceWidth
-// matrix radii wide unless regrow gives a width), the seeds together (5
-// radii) or one by one (3 radii); an error where there is no regrowth.
-TEST(FixOptions, GrowBalanceTogetherOrEach)
+// grow: balance, the only mode, changes nothing; the retired modes are an
+// ERROR that names the default; an error where there is no regrowth.
+TEST(FixOptions, GrowBalanceOnly)
 {
-  const Settings fallback = make_settings(parse_fix_arguments({"0", "bars"}), 0.1, 0.3, 100);
-  EXPECT_TRUE(fallback.grow_balance);
-  EXPECT_FALSE(fallback.grow_together);
-  EXPECT_DOUBLE_EQ(fallback.regrow, regrowth_policy::kBalanceWidth * 0.3);
-  const Settings balance =
-      make_settings(parse_fix_arguments({"0", "bars", "grow", "balance"}), 0.1, 0.3, 100);
-  EXPECT_TRUE(balance.grow_balance);
-  EXPECT_FALSE(balance.grow_together);
-  EXPECT_DOUBLE_EQ(balance.regrow, regrowth_policy::kBalanceWidth * 0.3);
+  EXPECT_DOUBLE_EQ(
+      make_settings(parse_fix_arguments({"0", "bars", "grow", "balance"}), 0.1, 0.3, 100).regrow,
+      8 * 0.3);
   EXPECT_DOUBLE_EQ(
       make_settings(parse_fix_arguments({"0", "bars", "grow", "balance", "regrow", "0.5"}), 0.1,
                     0.3, 100)
           .regrow,
       0.5);
-  const Settings together =
-      make_settings(parse_fix_arguments({"0", "bars", "grow", "together"}), 0.1, 0.3, 100);
-  EXPECT_TRUE(together.grow_together);
-  EXPECT_FALSE(together.grow_balance);
-  EXPECT_DOUBLE_EQ(together.regrow, 1.5);
-  const Settings each =
-      make_settings(parse_fix_arguments({"0", "bars", "grow", "each"}), 0.1, 0.3, 100);
-  EXPECT_FALSE(each.grow_together);
-  EXPECT_FALSE(each.grow_balance);
-  EXPECT_DOUBLE_EQ(each.regrow, 0.9);
-  EXPECT_EQ(make_settings(parse_fix_arguments({"0", "bars", "grow", "together", "regrow", "0.5"}),
-                          0.1, 0.3, 100)
-                .regrow,
-            0.5);
-  EXPECT_TRUE(make_settings(parse_fix_arguments(
-                                {"0", "bars", "size", "fit", "regrow", "yes", "grow", "together"}),
-                            0.1, 0.3, 100)
-                  .grow_together);
-  // The last grow given wins, whichever mode came before.
-  const Settings last = make_settings(
-      parse_fix_arguments({"0", "bars", "grow", "balance", "grow", "each"}), 0.1, 0.3, 100);
-  EXPECT_FALSE(last.grow_balance);
-  EXPECT_FALSE(last.grow_together);
-  EXPECT_TRUE(make_settings(parse_fix_arguments({"0", "bars", "grow", "each", "grow", "balance"}),
-                            0.1, 0.3, 100)
-                  .grow_balance);
   const std::string I = "Illegal fix reinforce/invert command: ";
-  EXPECT_EQ(error_of({"0", "bars", "grow", "both"}),
-            I + "grow must be 'balance', 'together' or 'each', got 'both'");
+  for (const char *retired : {"together", "each"})
+    EXPECT_EQ(error_of({"0", "bars", "grow", retired}),
+              I + "grow " + retired +
+                  " is retired: the regrowth rebuilds one zone around every target without a "
+                  "void (grow balance, the default)");
+  EXPECT_EQ(error_of({"0", "bars", "grow", "both"}), I + "grow must be 'balance', got 'both'");
   EXPECT_EQ(error_of({"0", "bars", "grow"}), I + "missing value for keyword 'grow'");
   const std::string off = I + "grow sets how the regrowth grows its seeds, and the regrowth is "
                               "off (regrow no, unplaced keep, or size fit without regrow)";
-  EXPECT_EQ(error_of({"0", "bars", "grow", "together", "regrow", "no"}), off);
-  EXPECT_EQ(error_of({"0", "bars", "unplaced", "keep", "grow", "each"}), off);
-  EXPECT_EQ(error_of({"0", "bars", "size", "fit", "grow", "together"}), off);
   EXPECT_EQ(error_of({"0", "bars", "regrow", "no", "grow", "balance"}), off);
+  EXPECT_EQ(error_of({"0", "bars", "unplaced", "keep", "grow", "balance"}), off);
+  EXPECT_EQ(error_of({"0", "bars", "size", "fit", "grow", "balance"}), off);
 }
 
 TEST(FixOptions, ImpossibleRadiusRangeFromScene)

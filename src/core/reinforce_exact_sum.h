@@ -19,18 +19,26 @@ public:
   static constexpr int kQuantumBits = 64;    // the quantum: unit * 2^-64
 
   // `unit`: the scale of the terms (> 0 and finite; else 1).
-  explicit ExactSum(double unit) : unit_(unit > 0 && std::isfinite(unit) ? unit : 1.0) {}
+  explicit ExactSum(double unit)
+      : unit_(unit > 0 && std::isfinite(unit) ? unit : 1.0), scale_(std::ldexp(1.0 / unit_, kQuantumBits))
+  {
+  }
 
   void add(double term)
   {
-    const double q = std::ldexp(term / unit_, kQuantumBits);
+    const double q = term * scale_;
+    if (std::fabs(q) < 0x1p62) {    // the usual case: one integer conversion
+      total_ += static_cast<std::int64_t>(std::nearbyint(q));
+      return;
+    }
     constexpr double kLimit = 0x1p126;    // 2^62 units, far below 2^127 quanta
     if (!(q == q)) return;                  // NaN adds nothing
     const double clamped = q > kLimit ? kLimit : (q < -kLimit ? -kLimit : q);
-    // |rounded| split into 64-bit halves, each exact in a double.
-    const double magnitude = std::fabs(std::nearbyint(clamped));
-    const double high = std::floor(std::ldexp(magnitude, -64));
-    const double low = magnitude - std::ldexp(high, 64);    // in [0, 2^64): exact
+    // |clamped| (a whole number) split into 64-bit halves, each exact in a
+    // double.
+    const double magnitude = std::fabs(clamped);
+    const double high = std::floor(magnitude * 0x1p-64);
+    const double low = magnitude - high * 0x1p64;    // in [0, 2^64): exact
     const __int128 whole = (static_cast<__int128>(static_cast<std::uint64_t>(high)) << 64) +
                            static_cast<__int128>(static_cast<std::uint64_t>(low));
     total_ += clamped < 0 ? -whole : whole;
@@ -71,6 +79,7 @@ private:
   }
 
   double unit_;
+  double scale_;    // quanta per unit of a term
   __int128 total_ = 0;
 };
 

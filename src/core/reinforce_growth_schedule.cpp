@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 namespace reinforce {
 
@@ -16,13 +18,42 @@ Growth::Growth(HostHooks &host, Zone &zone, SoftRelaxation &relax, const std::ve
   for (const Seed &s : seeds) seed_of_[s.id] = &s;
 }
 
+static double envd(const char *n, double d) { const char *v = getenv(n); return v ? atof(v) : d; }
 GrowthOutcome Growth::run(double start)
 {
   outcome_ = GrowthOutcome{};
   bool jammed = false;
+  const int kStages = (int)envd("RG_STAGES", regrowth_policy::kStages);
+  const double geom = envd("RG_GEOM", 0);
+  const int kPullSteps = (int)envd("RG_PULLSTEPS", regrowth_policy::kPullSteps);
+  const int kStageSteps = (int)envd("RG_STAGESTEPS", regrowth_policy::kStageSteps);
+  if (envd("RG_CONT", 0) > 0) {
+    relax_.set_scale(start);
+    relax_.set_pull(kPull);
+    relax_.set_growth(envd("RG_RATE", 1e-3), 1.0, envd("RG_TAU", 1e-2), kPullUntil);
+    double worst = relax_.run((int)envd("RG_MAXSTEPS", 3000), kNearlyJammed);
+    if (getenv("RDEBUG")) fprintf(stderr, "cont steps %ld scale %.4f worst %.2e\n", (long)relax_.steps(), relax_.scale(), worst);
+    int rounds = 0;
+    while ((worst > kNearlyJammed || relax_.scale() < 1) && rounds++ < kDrops) {
+      if (!drop_overlapped(kNearlyJammed)) break;
+      worst = relax_.run((int)envd("RG_DROPSTEPS", 500), kNearlyJammed);
+      if (getenv("RDEBUG")) fprintf(stderr, "drop steps %ld scale %.4f worst %.2e given %ld\n", (long)relax_.steps(), relax_.scale(), worst, (long)outcome_.given_up);
+    }
+    relax_.set_growth(0, 0, 0, 0);
+    outcome_.scale = relax_.scale();
+    jammed = worst > kNearlyJammed || relax_.scale() < 1;
+    bool clear = !jammed && finish();
+    if (getenv("RDEBUG")) fprintf(stderr, "finish steps %ld clear %d\n", (long)relax_.steps(), clear);
+    for (int k = 0; k < kDrops && !clear && !jammed; ++k)
+      clear = drop_overlapped(0) && finish();
+    outcome_.clear = clear;
+    outcome_.jammed = jammed;
+    return outcome_;
+  }
   for (int stage = 1; stage <= kStages && !jammed; ++stage) {
-    const bool last = stage == kStages;
-    const double scale = last ? 1.0 : start + (1 - start) * stage / kStages;
+    bool last = stage == kStages;
+    double scale = last ? 1.0 : start + (1 - start) * stage / kStages;
+    if (geom > 0) { scale = 1 - (1 - start) * std::pow(geom, stage); if (1 - scale < 2e-3) { scale = 1; last = true; } }
     relax_.set_scale(scale);
     outcome_.scale = scale;
     if (scale < kPullUntil) {
@@ -30,15 +61,23 @@ GrowthOutcome Growth::run(double start)
       relax_.run(kPullSteps, -1);    // every step, overlaps or not
       relax_.set_pull(0);
     }
+    const auto before = relax_.steps();
     double worst = relax_.run(kStageSteps, kStageSettled);
+    const auto mid = relax_.steps();
     worst = drop_until(worst, kAbort, kStageSteps);
     jammed = worst > kAbort;
+    if (last) stage = kStages;
+    if (getenv("RDEBUG")) fprintf(stderr, "stage %d scale %.3f steps %ld + drops %ld worst %.2e given %ld\n", stage, scale, (long)(mid-before), (long)(relax_.steps()-mid), worst, (long)outcome_.given_up);
   }
   if (!jammed) {
+    auto before = relax_.steps();
     double worst = relax_.run(kJudgeSteps, kNearlyJammed);
     worst = drop_until(worst, kNearlyJammed, kJudgeSteps);
     jammed = worst > kNearlyJammed;
+    if (getenv("RDEBUG")) fprintf(stderr, "judge steps %ld worst %.2e given %ld\n", (long)(relax_.steps()-before), worst, (long)outcome_.given_up);
+    before = relax_.steps();
     bool clear = !jammed && finish();
+    if (getenv("RDEBUG")) fprintf(stderr, "finish steps %ld clear %d\n", (long)(relax_.steps()-before), clear);
     for (int k = 0; k < kDrops && !clear && !jammed; ++k)
       clear = drop_overlapped(0) && finish();
     outcome_.clear = clear;
@@ -106,7 +145,7 @@ void Growth::give_up(const std::vector<std::int64_t> &ids)
       b.growing = false;
       if (seed.r > 0) {
         b.R = seed.r;
-        b.matrix = true;
+        b.packing = true;
       } else {
         b.present = false;
       }
@@ -141,7 +180,7 @@ void Growth::undo(const std::vector<Seed> &seeds)
       ids.push_back(s.id);
   }
   give_up(ids);
-  for (ZoneBody &b : zone_.bodies) b.x = b.x0;
+  for (std::size_t k = 0; k < zone_.bodies.size(); ++k) zone_.x[k] = zone_.bodies[k].x0;
 }
 
 }    // namespace reinforce

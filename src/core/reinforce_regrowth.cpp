@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <tuple>
 #include <unordered_map>
 
@@ -45,8 +46,8 @@ void start_out_of_bars(Zone &zone, const Domain &domain, double tol)
   });
   for (int m : zone.moving) {
     ZoneBody &seed = zone.bodies[static_cast<std::size_t>(m)];
-    if (!seed.growing || seed.matrix) continue;
-    const double r = kGrowStart * seed.R;
+    if (!seed.growing || seed.packing) continue;
+    const double r = (getenv("RG_START") ? atof(getenv("RG_START")) : kGrowStart) * seed.R;
     Vec3 x = seed.x0;
     for (int pass = 0; pass < 3; ++pass)
       for (int k : bars) {
@@ -57,7 +58,7 @@ void start_out_of_bars(Zone &zone, const Domain &domain, double tol)
             d > 1e-12 * o.R ? (1 / d) * (x - o.x0) : Vec3{seed.id < o.id ? -1.0 : 1.0, 0, 0};
         x = o.x0 + (o.R + r) * n;
       }
-    if (norm(x - seed.x0) <= seed.cap && admissible(seed.x0, x, seed.R, domain, tol)) seed.x = x;
+    if (norm(x - seed.x0) <= seed.cap && admissible(seed.x0, x, seed.R, domain, tol)) zone.x[m] = x;
   }
 }
 
@@ -69,15 +70,17 @@ void apply(HostHooks &host, const Zone &zone, const std::vector<Seed> &seeds, do
   std::unordered_map<std::int64_t, const Seed *> seed_of;
   for (const Seed &s : seeds) seed_of[s.id] = &s;
   std::vector<int> doomed;
-  for (const ZoneBody &b : zone.bodies) {
+  for (std::size_t k = 0; k < zone.bodies.size(); ++k) {
+    const ZoneBody &b = zone.bodies[k];
     if (!b.owned) continue;
+    const Vec3 x = zone.x[k];
     const auto found = seed_of.find(b.id);
-    const bool moved = norm2(b.x - b.x0) > 0;
+    const bool moved = norm2(x - b.x0) > 0;
     if (found == seed_of.end()) {
       if (!b.movable || !moved) continue;
       stats.moved++;
-      stats.max_move = std::max(stats.max_move, norm(b.x - b.x0) / rmin);
-      host.move(b.local, b.x, b.R);
+      stats.max_move = std::max(stats.max_move, norm(x - b.x0) / rmin);
+      host.move(b.local, x, b.R);
       continue;
     }
     const Seed &seed = *found->second;
@@ -88,14 +91,14 @@ void apply(HostHooks &host, const Zone &zone, const std::vector<Seed> &seeds, do
         stats.shrunk_regrown++;
         stats.volume_unshrunk += ball_volume(seed.R) - ball_volume(seed.r);
       }
-      if (back || moved) host.move(b.local, b.x, back ? seed.R : seed.r);
+      if (back || moved) host.move(b.local, x, back ? seed.R : seed.r);
       continue;
     }
     stats.seeds++;
     if (back) {
       stats.regrown++;
       stats.volume_regrown += ball_volume(seed.R);
-      host.move(b.local, b.x, seed.R);
+      host.move(b.local, x, seed.R);
     } else {
       stats.deleted++;
       if (seed.depth < 0) stats.displaced++;
@@ -119,7 +122,7 @@ void regrow(HostHooks &host, const RegrowthInput &in, RegrowthStats &stats)
   const AtomArrays a = host.atoms();
   std::vector<Seed> seeds = gather_seeds(host, a, in.shrunk, in.domain);
   if (seeds.empty()) return;
-  count_kept(seeds, kBalanceShare);
+  count_kept(seeds, getenv("RG_SHARE") ? atof(getenv("RG_SHARE")) : kBalanceShare);
   ZoneShape shape;
   shape.width = in.width;
   shape.cap = cap_of(in.matrix_rmax);
@@ -129,9 +132,10 @@ void regrow(HostHooks &host, const RegrowthInput &in, RegrowthStats &stats)
   start_out_of_bars(zone, in.domain, in.settings.tol);
   zone.forward_positions();
   SoftRelaxation relax(host, zone, in.domain, in.settings.tol, in.matrix_rmin, in.matrix_rmax);
-  relax.set_scale(kGrowStart);
+  const double start = getenv("RG_START") ? atof(getenv("RG_START")) : kGrowStart;
+  relax.set_scale(start);
   Growth growth(host, zone, relax, seeds);
-  const GrowthOutcome outcome = growth.run(kGrowStart);
+  const GrowthOutcome outcome = growth.run(start);
   stats.sweeps = relax.steps();
   if (outcome.clear) {
     // At their own radii, against everything present, beyond what each

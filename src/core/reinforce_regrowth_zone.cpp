@@ -12,12 +12,12 @@ namespace reinforce {
 namespace {
 
 // The flags a body's owner sends its ghosts.
-enum : int { kPresent = 1, kMovable = 2, kGrowing = 4, kMatrix = 8 };
+enum : int { kPresent = 1, kMovable = 2, kGrowing = 4, kPacking = 8 };
 
 int flags_of(const ZoneBody &b)
 {
   return (b.present ? kPresent : 0) | (b.movable ? kMovable : 0) | (b.growing ? kGrowing : 0) |
-         (b.matrix ? kMatrix : 0);
+         (b.packing ? kPacking : 0);
 }
 
 void set_flags(ZoneBody &b, int flags)
@@ -25,7 +25,7 @@ void set_flags(ZoneBody &b, int flags)
   b.present = flags & kPresent;
   b.movable = flags & kMovable;
   b.growing = flags & kGrowing;
-  b.matrix = flags & kMatrix;
+  b.packing = flags & kPacking;
 }
 
 // The distance from x to the nearest seed (or a periodic image of one)
@@ -91,10 +91,9 @@ Zone::Zone(HostHooks &host, const AtomArrays &a, const std::vector<Seed> &seeds,
       b.present = seed.kept || !vacant;
       b.movable = b.present;
       b.growing = seed.kept;
-      b.matrix = !seed.kept;    // a shrunk one left shrunk is matrix again
+      b.packing = !seed.kept;    // a shrunk one left shrunk is a sphere of the packing again
       if (seed.kept) b.R = seed.R;
     } else if (is_matrix(a, i)) {
-      b.matrix = true;
       b.movable = nearest[i] < shape.width;
     }
     rows_[2 * i] = b.R;
@@ -104,7 +103,7 @@ Zone::Zone(HostHooks &host, const AtomArrays &a, const std::vector<Seed> &seeds,
   for (int i = 0; i < a.nall; ++i) {
     if (!(nearest[i] < shape.reach)) continue;
     ZoneBody b;
-    b.x = b.x0 = Vec3{a.x[i][0], a.x[i][1], a.x[i][2]};
+    b.x0 = Vec3{a.x[i][0], a.x[i][1], a.x[i][2]};
     b.R = rows_[2 * i];
     set_flags(b, static_cast<int>(rows_[2 * i + 1]));
     b.id = a.id(i);
@@ -118,6 +117,7 @@ Zone::Zone(HostHooks &host, const AtomArrays &a, const std::vector<Seed> &seeds,
     }
     if (!b.present) b.movable = false;
     bodies.push_back(b);
+    x.push_back(b.x0);
   }
   by_id_.resize(bodies.size());
   for (std::size_t k = 0; k < bodies.size(); ++k) by_id_[k] = static_cast<int>(k);
@@ -152,13 +152,14 @@ void Zone::find_bars(double range)
 void Zone::forward_positions()
 {
   for (int m : moving) {
-    const ZoneBody &b = bodies[static_cast<std::size_t>(m)];
-    for (int d = 0; d < 3; ++d) rows_[3 * b.local + d] = b.x[d];
+    const int row = 3 * bodies[static_cast<std::size_t>(m)].local;
+    for (int d = 0; d < 3; ++d) rows_[row + d] = x[m][d];
   }
   host_.forward(rows_, 3, true);
-  for (ZoneBody &b : bodies)
-    if (!b.owned && b.movable)
-      b.x = Vec3{rows_[3 * b.local], rows_[3 * b.local + 1], rows_[3 * b.local + 2]};
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    const ZoneBody &b = bodies[k];
+    if (!b.owned && b.movable) x[k] = Vec3{rows_[3 * b.local], rows_[3 * b.local + 1], rows_[3 * b.local + 2]};
+  }
 }
 
 void Zone::forward_flags()

@@ -31,7 +31,7 @@ struct Seed {
 
 // One copy of a host atom near the seeds.
 struct ZoneBody {
-  Vec3 x, x0;            // now, and at the start
+  Vec3 x0;               // where it was at the start (where it is now: Zone::x)
   double R = 0;          // its radius at full size (a kept shrunk seed: its own)
   std::int64_t id = 0;
   int local = -1;        // the host's index
@@ -40,7 +40,7 @@ struct ZoneBody {
   bool present = true;   // false: a seed deleted or given up
   bool movable = false;  // in the zone: its owner moves it
   bool growing = false;  // a seed growing back (given up when it does not fit)
-  bool matrix = false;   // a sphere of the packing: what it overlapped at the start is allowed
+  bool packing = true;   // as the packing had it (not a seed): its overlaps at the start stay allowed
   double w = 0;          // owned movable: mobility, 1 at a seed, 0 at the zone's edge
   double cap = 0;        // owned movable: the largest distance from x0
   int bar = -1;          // owned movable matrix: its nearest rebar body, or -1
@@ -63,6 +63,7 @@ public:
        const ZoneShape &shape, const Domain &domain);
 
   std::vector<ZoneBody> bodies;
+  std::vector<Vec3> x;        // where each body is now
   std::vector<int> moving;    // the owned movable bodies, ascending
 
   // The owned bodies' positions, or their flags (present, movable,

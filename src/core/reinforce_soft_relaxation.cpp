@@ -13,18 +13,6 @@ namespace reinforce {
 
 using namespace regrowth_policy;
 
-namespace {
-
-// The direction from o to b at distance dist; for coincident centres one
-// fixed by the ids (the same on every process).
-Vec3 apart(const ZoneBody &b, const ZoneBody &o, double dist)
-{
-  if (dist > 1e-12 * (b.R + o.R)) return (1 / dist) * (b.x - o.x);
-  return Vec3{b.id < o.id ? -1.0 : 1.0, 0, 0};
-}
-
-}    // namespace
-
 SoftRelaxation::SoftRelaxation(HostHooks &host, Zone &zone, const Domain &domain, double tol,
                                double rmin, double rmax)
     : host_(host), zone_(zone), domain_(domain), tol_(tol), rmin_(rmin), skin_(kSkin * rmax),
@@ -48,12 +36,27 @@ SoftRelaxation::SoftRelaxation(HostHooks &host, Zone &zone, const Domain &domain
   f_.assign(n, Vec3{});
 }
 
+// Each body's radius now (the movable ones at the scale; 0: absent).
+void SoftRelaxation::update_radii()
+{
+  const std::vector<ZoneBody> &bodies = zone_.bodies;
+  radius_.resize(bodies.size());
+  movable_.resize(bodies.size());
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    const ZoneBody &b = bodies[k];
+    radius_[k] = !b.present ? 0.0 : (b.movable ? scale_ * b.R : b.R);
+    movable_[k] = b.movable;
+  }
+  stale_radii_ = false;
+}
+
 // Each moving body's neighbours: the present bodies within both radii,
 // the skin and a pad of it, in (id, place) order, with what the pair
 // overlapped at the start when both are spheres of the packing.
 void SoftRelaxation::build_lists()
 {
   const std::vector<ZoneBody> &bodies = zone_.bodies;
+  const std::vector<Vec3> &x = zone_.x;
   double largest = 0, movable = 0;
   for (const ZoneBody &b : bodies) {
     largest = std::max(largest, b.R);
@@ -62,19 +65,19 @@ void SoftRelaxation::build_lists()
   const double margin = skin_ + kPad * movable;
   CellGrid grid(2 * movable + margin);
   for (std::size_t k = 0; k < bodies.size(); ++k)
-    if (bodies[k].present) grid.insert(bodies[k].x, static_cast<int>(k));
+    if (bodies[k].present) grid.insert(x[k], static_cast<int>(k));
   for (std::size_t m = 0; m < zone_.moving.size(); ++m) {
     const int i = zone_.moving[m];
     const ZoneBody &b = bodies[static_cast<std::size_t>(i)];
     std::vector<Neighbour> &list = near_[m];
     list.clear();
-    built_[m] = b.x;
+    built_[m] = x[i];
     if (!b.present) continue;
-    grid.for_each_near(b.x, b.R + largest + margin, [&](int j) {
+    grid.for_each_near(x[i], b.R + largest + margin, [&](int j) {
       const ZoneBody &o = bodies[static_cast<std::size_t>(j)];
-      if (j == i || !(norm(b.x - o.x) < b.R + o.R + margin)) return;
+      if (j == i || !(norm(x[i] - x[j]) < b.R + o.R + margin)) return;
       const double allowed =
-          b.matrix && o.matrix ? std::max(0.0, pair_overlap(b.x0, b.R, o.x0, o.R, 0)) : 0;
+          b.packing && o.packing ? std::max(0.0, pair_overlap(b.x0, b.R, o.x0, o.R, 0)) : 0;
       list.push_back({j, allowed});
     });
     std::sort(list.begin(), list.end(),
@@ -85,32 +88,40 @@ void SoftRelaxation::build_lists()
 }
 
 // The forces on the moving bodies (their overlaps, harmonic, unit
-// stiffness; the pull towards their bar). Returns the largest overlap
-// here, over the smaller radius.
+// stiffness, summed in (id, place) order; the pull towards their bar).
+// Returns the largest overlap here, over the smaller radius.
 double SoftRelaxation::forces()
 {
   const std::vector<ZoneBody> &bodies = zone_.bodies;
+  const std::vector<Vec3> &x = zone_.x;
   double worst = 0;
   for (std::size_t m = 0; m < zone_.moving.size(); ++m) {
-    const ZoneBody &b = bodies[static_cast<std::size_t>(zone_.moving[m])];
+    const int i = zone_.moving[m];
+    const double ri = radius_[i];
     Vec3 F;
-    if (b.present) {
-      const double ri = radius(b);
+    if (ri > 0) {
+      const Vec3 xi = x[i];
       for (const Neighbour &n : near_[m]) {
-        const ZoneBody &o = bodies[static_cast<std::size_t>(n.j)];
-        if (!o.present) continue;
-        const double rj = radius(o);
+        const double rj = radius_[n.j];
+        if (!(rj > 0)) continue;
         double contact = ri + rj - n.allowed;
-        if (pad_ > 0 && o.movable) contact += pad_ * std::min(ri, rj);
-        const double d2 = norm2(b.x - o.x);
+        if (pad_ > 0 && movable_[n.j]) contact += pad_ * std::min(ri, rj);
+        const Vec3 d = xi - x[n.j];
+        const double d2 = norm2(d);
         if (d2 >= contact * contact) continue;
         const double dist = std::sqrt(d2);
         const double delta = contact - dist;
         worst = std::max(worst, delta / std::min(ri, rj));
-        F = F + delta * apart(b, o, dist);
+        // Coincident centres: a direction fixed by the ids, the same on
+        // every process.
+        if (dist > 1e-12 * (ri + rj))
+          F = F + (delta / dist) * d;
+        else
+          F = F + Vec3{bodies[i].id < bodies[n.j].id ? -delta : delta, 0, 0};
       }
+      const ZoneBody &b = bodies[static_cast<std::size_t>(i)];
       if (pull_ > 0 && b.bar >= 0) {
-        const Vec3 to_bar = bodies[static_cast<std::size_t>(b.bar)].x - b.x;
+        const Vec3 to_bar = x[b.bar] - xi;
         const double d = norm(to_bar);
         if (d > 0) F = F + (pull_ * b.R * b.w / d) * to_bar;
       }
@@ -126,10 +137,12 @@ double SoftRelaxation::reduce(double worst, double &power, double &vnorm, double
 {
   const double unit = rmin_ * rmin_;
   ExactSum p(unit), vv(unit), ff(unit);
+  double moved = 0;
   for (std::size_t m = 0; m < f_.size(); ++m) {
     p.add(dot(f_[m], v_[m]));
     vv.add(norm2(v_[m]));
     ff.add(norm2(f_[m]));
+    moved = std::max(moved, norm2(zone_.x[zone_.moving[m]] - built_[m]));
   }
   std::vector<double> sums;
   for (const ExactSum *s : {&p, &vv, &ff}) {
@@ -140,10 +153,7 @@ double SoftRelaxation::reduce(double worst, double &power, double &vnorm, double
   power = ExactSum::from_limbs(&sums[0], unit);
   vnorm = std::sqrt(std::max(0.0, ExactSum::from_limbs(&sums[ExactSum::kLimbs], unit)));
   fnorm = std::sqrt(std::max(0.0, ExactSum::from_limbs(&sums[2 * ExactSum::kLimbs], unit)));
-  double moved = 0;
-  for (std::size_t m = 0; m < zone_.moving.size(); ++m)
-    moved = std::max(moved, norm(zone_.bodies[zone_.moving[m]].x - built_[m]));
-  std::vector<double> maxima{worst, moved};
+  std::vector<double> maxima{worst, std::sqrt(moved)};
   host_.max_each(maxima);
   moved_ = maxima[1];
   return maxima[0];
@@ -153,15 +163,18 @@ double SoftRelaxation::reduce(double worst, double &power, double &vnorm, double
 // the box faces, and not where the walls or region refuse it.
 void SoftRelaxation::move(double dt)
 {
+  const bool walls = domain_.region || domain_.walls;
   for (std::size_t m = 0; m < zone_.moving.size(); ++m) {
-    ZoneBody &b = zone_.bodies[static_cast<std::size_t>(zone_.moving[m])];
+    const int i = zone_.moving[m];
+    const ZoneBody &b = zone_.bodies[static_cast<std::size_t>(i)];
     if (!b.present) continue;
+    Vec3 &x = zone_.x[i];
     Vec3 &v = v_[m];
     v = v + dt * f_[m];
     Vec3 d = dt * v;
     const double dn = norm(d);
     if (dn > kFireStep * b.R) d = (kFireStep * b.R / dn) * d;
-    Vec3 to = b.x + d;
+    Vec3 to = x + d;
     const double off = norm(to - b.x0);
     if (off > b.cap) {
       const Vec3 n = (1 / off) * (to - b.x0);
@@ -172,19 +185,19 @@ void SoftRelaxation::move(double dt)
     for (int a = 0; a < 3; ++a) {
       if (domain_.periodic[a]) continue;
       const double lo = domain_.lo[a] + b.R, hi = domain_.hi[a] - b.R;
-      if (to[a] < lo && b.x[a] >= lo) {
+      if (to[a] < lo && x[a] >= lo) {
         to[a] = lo;
         v[a] = 0;
-      } else if (to[a] > hi && b.x[a] <= hi) {
+      } else if (to[a] > hi && x[a] <= hi) {
         to[a] = hi;
         v[a] = 0;
       }
     }
-    if (!admissible(b.x, to, b.R, domain_, tol_)) {
+    if (walls && !admissible(x, to, b.R, domain_, tol_)) {
       v = Vec3{};
       continue;
     }
-    b.x = to;
+    x = to;
   }
 }
 
@@ -193,10 +206,11 @@ double SoftRelaxation::run(int steps, double done)
   double dt = kFireDt, alpha = kFireAlpha;
   int positive = 0;
   std::fill(v_.begin(), v_.end(), Vec3{});
+  if (stale_radii_) update_radii();
   if (stale_) build_lists();
   double power = 0, vn = 0, fn = 0;
   double worst = reduce(forces(), power, vn, fn);
-  for (int it = 0; it < steps && worst > done; ++it) {
+  for (int it = 0; it < steps && (worst > done || scale_ < grow_to_); ++it) {
     steps_++;
     if (power > 0) {
       if (fn > 0)
@@ -217,6 +231,11 @@ double SoftRelaxation::run(int steps, double done)
     // Every process knows the largest move since the lists: they stay
     // right while no sphere can have moved half the skin.
     if (moved_ + step_max_ > 0.5 * skin_) build_lists();
+    if (grow_rate_ > 0 && worst <= grow_below_ && scale_ < grow_to_) {
+      scale_ = std::min(grow_to_, scale_ + grow_rate_);
+      if (scale_ >= pull_until_) pull_ = 0;
+      update_radii();
+    }
     worst = reduce(forces(), power, vn, fn);
   }
   return worst;
@@ -224,31 +243,33 @@ double SoftRelaxation::run(int steps, double done)
 
 double SoftRelaxation::deepest(int k) const
 {
-  if (slot_[static_cast<std::size_t>(k)] < 0) return 0;
-  const std::size_t m = static_cast<std::size_t>(slot_[static_cast<std::size_t>(k)]);
-  const ZoneBody &b = zone_.bodies[static_cast<std::size_t>(k)];
+  const int m = slot_[static_cast<std::size_t>(k)];
+  if (m < 0 || !(radius_[k] > 0)) return 0;
+  const double ri = radius_[k];
   double most = 0;
-  for (const Neighbour &n : near_[m]) {
-    const ZoneBody &o = zone_.bodies[static_cast<std::size_t>(n.j)];
-    if (!o.present) continue;
-    const double ri = radius(b), rj = radius(o);
-    most = std::max(most, pair_overlap(b.x, ri, o.x, rj, n.allowed) / std::min(ri, rj));
+  for (const Neighbour &n : near_[static_cast<std::size_t>(m)]) {
+    const double rj = radius_[n.j];
+    if (!(rj > 0)) continue;
+    most = std::max(most, pair_overlap(zone_.x[k], ri, zone_.x[n.j], rj, n.allowed) /
+                              std::min(ri, rj));
   }
   return most;
 }
 
 double SoftRelaxation::worst_at_full_size(double above, std::int64_t &count) const
 {
+  const std::vector<ZoneBody> &bodies = zone_.bodies;
   double worst = 0;
   count = 0;
   for (std::size_t m = 0; m < zone_.moving.size(); ++m) {
-    const ZoneBody &b = zone_.bodies[static_cast<std::size_t>(zone_.moving[m])];
+    const int i = zone_.moving[m];
+    const ZoneBody &b = bodies[static_cast<std::size_t>(i)];
     if (!b.present) continue;
     bool exact = true;
     for (const Neighbour &n : near_[m]) {
-      const ZoneBody &o = zone_.bodies[static_cast<std::size_t>(n.j)];
+      const ZoneBody &o = bodies[static_cast<std::size_t>(n.j)];
       if (!o.present) continue;
-      const double overlap = pair_overlap(b.x, b.R, o.x, o.R, n.allowed);
+      const double overlap = pair_overlap(zone_.x[i], b.R, zone_.x[n.j], o.R, n.allowed);
       worst = std::max(worst, overlap / rmin_);
       exact = exact && !(overlap > above * std::min(b.R, o.R));
     }

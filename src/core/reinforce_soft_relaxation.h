@@ -32,15 +32,30 @@ public:
                  double rmax);
 
   // The movable spheres' radii as a share of their own.
-  void set_scale(double scale) { scale_ = scale; }
+  void set_scale(double scale)
+  {
+    scale_ = scale;
+    stale_radii_ = true;
+  }
   // The pull towards a matrix sphere's bar, as a share of its radius times
   // its mobility (0: none).
   void set_pull(double pull) { pull_ = pull; }
   // Each pair of movable spheres' contact distance lengthened by `pad` of
   // its smaller radius (0: none).
   void set_pad(double pad) { pad_ = pad; }
+  // While run() steps, the scale grows by `rate` a step whenever no
+  // overlap exceeds `below` (over the smaller radius), up to `to` (0: no
+  // growth); the pull stops once it reaches `pull_until`.
+  void set_growth(double rate, double to, double below, double pull_until)
+  {
+    grow_rate_ = rate;
+    grow_to_ = to;
+    grow_below_ = below;
+    pull_until_ = pull_until;
+  }
+  double scale() const { return scale_; }
   // The bodies' flags changed (a seed given up): the lists are made again.
-  void flags_changed() { stale_ = true; }
+  void flags_changed() { stale_ = stale_radii_ = true; }
 
   // At most `steps` FIRE steps, until the largest overlap (over the
   // smaller radius, every process's) is at most `done`. Returns it.
@@ -66,15 +81,18 @@ private:
   const Domain &domain_;
   double tol_, rmin_, skin_, step_max_;
   double scale_ = 1, pull_ = 0, pad_ = 0;
-  bool stale_ = true;
+  double grow_rate_ = 0, grow_to_ = 0, grow_below_ = 0, pull_until_ = 0;
+  bool stale_ = true, stale_radii_ = true;
   std::int64_t steps_ = 0;
   double moved_ = 0;                          // the largest move since the lists (global)
   std::vector<std::vector<Neighbour>> near_;  // per moving body
   std::vector<Vec3> built_, v_, f_;           // per moving body
+  std::vector<double> radius_;                // per body: its radius now, 0 when absent
+  std::vector<unsigned char> movable_;        // per body
   std::vector<int> rank_;                     // bodies' (id, place) order
   std::vector<int> slot_;                     // a body's index in `moving`, or -1
 
-  double radius(const ZoneBody &b) const { return b.movable ? scale_ * b.R : b.R; }
+  void update_radii();
   void build_lists();
   double forces();
   void move(double dt);
