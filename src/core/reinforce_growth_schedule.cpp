@@ -67,6 +67,13 @@ GrowthOutcome Growth::run(double start)
     worst = drop_until(worst, kAbort, kStageSteps);
     jammed = worst > kAbort;
     if (last) stage = kStages;
+    if (jammed && getenv("RDEBUG")) {
+      for (int k : zone_.moving) {
+        const double d = relax_.deepest(k);
+        if (d > kAbort) { const ZoneBody &b = zone_.bodies[k]; fprintf(stderr, "  body id %ld R %.4g growing %d packing %d deepest %.3g off %.3g cap %.3g\n", (long)b.id, b.R, b.growing, b.packing, d, norm(zone_.x[k]-b.x0), b.cap);
+          for (std::size_t j = 0; j < zone_.bodies.size(); ++j) { const ZoneBody &o = zone_.bodies[j]; if ((int)j==k || !o.present) continue; double rj = o.movable ? relax_.scale()*o.R : o.R; double ov = (relax_.scale()*b.R + rj - norm(zone_.x[k]-zone_.x[j]))/std::min(relax_.scale()*b.R, rj); if (ov > 0.01) fprintf(stderr, "     with id %ld R %.4g rebar %d movable %d growing %d ov %.3g off %.3g\n", (long)o.id, o.R, o.rebar, o.movable, o.growing, ov, norm(zone_.x[j]-o.x0)); } }
+      }
+    }
     if (getenv("RDEBUG")) fprintf(stderr, "stage %d scale %.3f steps %ld + drops %ld worst %.2e given %ld\n", stage, scale, (long)(mid-before), (long)(relax_.steps()-mid), worst, (long)outcome_.given_up);
   }
   if (!jammed) {

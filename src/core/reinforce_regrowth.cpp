@@ -30,12 +30,16 @@ double touch_reach(double matrix_rmax, double largest)
   return 2 * cap_of(matrix_rmax) + matrix_rmax + largest + (kSkin + kPad) * matrix_rmax;
 }
 
-// Where an owned kept seed without a void starts: pushed out of the bar
-// spheres it overlaps at kGrowStart of its radius (a few passes, for the
-// beads of a chain); where it was if that leaves its cap or the walls
-// refuse it (the growth pushes it out then).
-void start_out_of_bars(Zone &zone, const Domain &domain, double tol)
+// Where an owned kept seed starts: where it was before the relocation
+// (its old centre; a target placed shrunk leaves its shrunk place), pushed
+// out of the bar spheres it overlaps at kGrowStart of its radius (a few
+// passes, for the beads of a chain); at its atom's place if that leaves
+// its cap or the walls refuse it (the growth pushes it out then).
+void start_out_of_bars(Zone &zone, const std::vector<Seed> &seeds, const Domain &domain,
+                       double start, double tol)
 {
+  std::unordered_map<std::int64_t, const Seed *> seed_of;
+  for (const Seed &s : seeds) seed_of[s.id] = &s;
   // The bars in (id, place) order: the passes push along them in turn.
   std::vector<int> bars;
   for (std::size_t k = 0; k < zone.bodies.size(); ++k)
@@ -46,9 +50,15 @@ void start_out_of_bars(Zone &zone, const Domain &domain, double tol)
   });
   for (int m : zone.moving) {
     ZoneBody &seed = zone.bodies[static_cast<std::size_t>(m)];
-    if (!seed.growing || seed.packing) continue;
-    const double r = (getenv("RG_START") ? atof(getenv("RG_START")) : kGrowStart) * seed.R;
-    Vec3 x = seed.x0;
+    if (!seed.growing) continue;
+    const double r = start * seed.R;
+    // Its old centre, the copy nearest its atom.
+    Vec3 x = seed_of.at(seed.id)->x;
+    for (int d = 0; d < 3; ++d)
+      if (domain.periodic[d]) {
+        const double period = domain.hi[d] - domain.lo[d];
+        x[d] -= period * std::round((x[d] - seed.x0[d]) / period);
+      }
     for (int pass = 0; pass < 3; ++pass)
       for (int k : bars) {
         const ZoneBody &o = zone.bodies[static_cast<std::size_t>(k)];
@@ -129,10 +139,10 @@ void regrow(HostHooks &host, const RegrowthInput &in, RegrowthStats &stats)
   shape.reach = in.width + touch_reach(in.matrix_rmax, in.largest);
   shape.pull_range = kPullRange * in.matrix_rmax;
   Zone zone(host, a, seeds, shape, in.domain);
-  start_out_of_bars(zone, in.domain, in.settings.tol);
+  const double start = getenv("RG_START") ? atof(getenv("RG_START")) : kGrowStart;
+  start_out_of_bars(zone, seeds, in.domain, start, in.settings.tol);
   zone.forward_positions();
   SoftRelaxation relax(host, zone, in.domain, in.settings.tol, in.matrix_rmin, in.matrix_rmax);
-  const double start = getenv("RG_START") ? atof(getenv("RG_START")) : kGrowStart;
   relax.set_scale(start);
   Growth growth(host, zone, relax, seeds);
   const GrowthOutcome outcome = growth.run(start);

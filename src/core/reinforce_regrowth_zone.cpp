@@ -61,6 +61,16 @@ private:
   std::vector<Vec3> points_;
 };
 
+// Wholly inside the box's faces in its non-periodic dimensions.
+bool inside_faces(const AtomArrays &a, int i, const Domain &domain)
+{
+  for (int d = 0; d < 3; ++d)
+    if (!domain.periodic[d] &&
+        (a.x[i][d] - a.radius[i] < domain.lo[d] || a.x[i][d] + a.radius[i] > domain.hi[d]))
+      return false;
+  return true;
+}
+
 bool is_matrix(const AtomArrays &a, int i)
 {
   return (a.mask[i] & a.group_bit) && !(a.mask[i] & (a.rebar_bit | a.frozen_bits));
@@ -94,7 +104,9 @@ Zone::Zone(HostHooks &host, const AtomArrays &a, const std::vector<Seed> &seeds,
       b.packing = !seed.kept;    // a shrunk one left shrunk is a sphere of the packing again
       if (seed.kept) b.R = seed.R;
     } else if (is_matrix(a, i)) {
-      b.movable = nearest[i] < shape.width;
+      // One that pokes through a box face stays: where it moved, it would
+      // have to be wholly inside.
+      b.movable = nearest[i] < shape.width && inside_faces(a, i, domain);
     }
     rows_[2 * i] = b.R;
     rows_[2 * i + 1] = flags_of(b);

@@ -111,7 +111,7 @@ double SoftRelaxation::forces()
         if (d2 >= contact * contact) continue;
         const double dist = std::sqrt(d2);
         const double delta = contact - dist;
-        worst = std::max(worst, delta / std::min(ri, rj));
+        worst = std::max(worst, delta / ri);
         // Coincident centres: a direction fixed by the ids, the same on
         // every process.
         if (dist > 1e-12 * (ri + rj))
@@ -182,13 +182,15 @@ void SoftRelaxation::move(double dt)
       const double out = dot(v, n);
       if (out > 0) v = v - out * n;
     }
+    // Wholly inside the box faces (a sphere of the packing that pokes
+    // through one does not move: Zone).
     for (int a = 0; a < 3; ++a) {
       if (domain_.periodic[a]) continue;
       const double lo = domain_.lo[a] + b.R, hi = domain_.hi[a] - b.R;
-      if (to[a] < lo && x[a] >= lo) {
+      if (to[a] < lo) {
         to[a] = lo;
         v[a] = 0;
-      } else if (to[a] > hi && x[a] <= hi) {
+      } else if (to[a] > hi) {
         to[a] = hi;
         v[a] = 0;
       }
@@ -250,8 +252,7 @@ double SoftRelaxation::deepest(int k) const
   for (const Neighbour &n : near_[static_cast<std::size_t>(m)]) {
     const double rj = radius_[n.j];
     if (!(rj > 0)) continue;
-    most = std::max(most, pair_overlap(zone_.x[k], ri, zone_.x[n.j], rj, n.allowed) /
-                              std::min(ri, rj));
+    most = std::max(most, pair_overlap(zone_.x[k], ri, zone_.x[n.j], rj, n.allowed) / ri);
   }
   return most;
 }
