@@ -38,11 +38,13 @@ private:
   SoftRelaxation &relax_;
   std::unordered_map<std::int64_t, const Seed *> seed_of_;
   GrowthOutcome outcome_;
+  double started_ = 0, said_ = 0;    // wall time at the start and at the last progress line
 
   double drop_until(double worst, double above, int steps);
   bool drop_overlapped(double above);
   bool finish();
   void give_up(const std::vector<std::int64_t> &ids);
+  void progress(const char *where);
 };
 
 }    // namespace reinforce

@@ -12,6 +12,10 @@
 
 namespace reinforce {
 
+// A stage that runs longer than this (seconds) says on the log how far it
+// got, at most this often.
+constexpr double kProgressEvery = 5;
+
 // The most values per atom HostHooks::forward sends.
 constexpr int kForwardWidth = 4;
 

@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <tuple>
 #include <unordered_map>
 
@@ -132,20 +131,19 @@ void regrow(HostHooks &host, const RegrowthInput &in, RegrowthStats &stats)
   const AtomArrays a = host.atoms();
   std::vector<Seed> seeds = gather_seeds(host, a, in.shrunk, in.domain);
   if (seeds.empty()) return;
-  count_kept(seeds, getenv("RG_SHARE") ? atof(getenv("RG_SHARE")) : kBalanceShare);
+  count_kept(seeds, kBalanceShare);
   ZoneShape shape;
   shape.width = in.width;
   shape.cap = cap_of(in.matrix_rmax);
   shape.reach = in.width + touch_reach(in.matrix_rmax, in.largest);
   shape.pull_range = kPullRange * in.matrix_rmax;
   Zone zone(host, a, seeds, shape, in.domain);
-  const double start = getenv("RG_START") ? atof(getenv("RG_START")) : kGrowStart;
-  start_out_of_bars(zone, seeds, in.domain, start, in.settings.tol);
+  start_out_of_bars(zone, seeds, in.domain, kGrowStart, in.settings.tol);
   zone.forward_positions();
   SoftRelaxation relax(host, zone, in.domain, in.settings.tol, in.matrix_rmin, in.matrix_rmax);
-  relax.set_scale(start);
+  relax.set_scale(kGrowStart);
   Growth growth(host, zone, relax, seeds);
-  const GrowthOutcome outcome = growth.run(start);
+  const GrowthOutcome outcome = growth.run(kGrowStart);
   stats.sweeps = relax.steps();
   if (outcome.clear) {
     // At their own radii, against everything present, beyond what each

@@ -92,10 +92,6 @@ bool touches(const BlockLattice &lattice, const Domain &box, const BlockKey &key
   return false;
 }
 
-// A stage that runs longer than this (seconds) says on the log how far it
-// got, at most this often.
-constexpr double kProgressEvery = 5;
-
 }    // namespace
 
 // One collective instead of one per element.

@@ -212,7 +212,7 @@ double SoftRelaxation::run(int steps, double done)
   if (stale_) build_lists();
   double power = 0, vn = 0, fn = 0;
   double worst = reduce(forces(), power, vn, fn);
-  for (int it = 0; it < steps && (worst > done || scale_ < grow_to_); ++it) {
+  for (int it = 0; it < steps && worst > done; ++it) {
     steps_++;
     if (power > 0) {
       if (fn > 0)
@@ -233,11 +233,6 @@ double SoftRelaxation::run(int steps, double done)
     // Every process knows the largest move since the lists: they stay
     // right while no sphere can have moved half the skin.
     if (moved_ + step_max_ > 0.5 * skin_) build_lists();
-    if (grow_rate_ > 0 && worst <= grow_below_ && scale_ < grow_to_) {
-      scale_ = std::min(grow_to_, scale_ + grow_rate_);
-      if (scale_ >= pull_until_) pull_ = 0;
-      update_radii();
-    }
     worst = reduce(forces(), power, vn, fn);
   }
   return worst;

@@ -43,17 +43,6 @@ public:
   // Each pair of movable spheres' contact distance lengthened by `pad` of
   // its smaller radius (0: none).
   void set_pad(double pad) { pad_ = pad; }
-  // While run() steps, the scale grows by `rate` a step whenever no
-  // overlap exceeds `below` (over the smaller radius), up to `to` (0: no
-  // growth); the pull stops once it reaches `pull_until`.
-  void set_growth(double rate, double to, double below, double pull_until)
-  {
-    grow_rate_ = rate;
-    grow_to_ = to;
-    grow_below_ = below;
-    pull_until_ = pull_until;
-  }
-  double scale() const { return scale_; }
   // The bodies' flags changed (a seed given up): the lists are made again.
   void flags_changed() { stale_ = stale_radii_ = true; }
 
@@ -62,7 +51,7 @@ public:
   // Collective.
   double run(int steps, double done);
 
-  // The deepest overlap of owned body k now (over the smaller radius).
+  // The deepest overlap of owned body k now (over its radius).
   double deepest(int k) const;
   // Over the owned movable bodies at full size: the largest overlap beyond
   // what each pair overlapped at the start (over rmin), and how many of
@@ -81,7 +70,6 @@ private:
   const Domain &domain_;
   double tol_, rmin_, skin_, step_max_;
   double scale_ = 1, pull_ = 0, pad_ = 0;
-  double grow_rate_ = 0, grow_to_ = 0, grow_below_ = 0, pull_until_ = 0;
   bool stale_ = true, stale_radii_ = true;
   std::int64_t steps_ = 0;
   double moved_ = 0;                          // the largest move since the lists (global)
