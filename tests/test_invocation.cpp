@@ -94,8 +94,7 @@ public:
   }
   double sum(double v) override { return v; }
   double max(double v) override { return v; }
-  void sum_each(std::vector<double> &) override {}
-  void max_each(std::vector<double> &) override {}
+  void sum_and_max(std::vector<double> &, std::vector<double> &) override {}
   // One process, no ghosts: nothing to send.
   void forward(std::vector<double> &, int, bool) override {}
   std::vector<double> gather_all(const std::vector<double> &mine) override { return mine; }

@@ -145,8 +145,7 @@ public:
   }
   double sum(double v) override { return v; }
   double max(double v) override { return v; }
-  void sum_each(std::vector<double> &) override {}
-  void max_each(std::vector<double> &) override {}
+  void sum_and_max(std::vector<double> &, std::vector<double> &) override {}
   void forward(std::vector<double> &values, int width, bool positions) override
   {
     ++forwards;

@@ -72,12 +72,12 @@ public:
   virtual void move(int local, Vec3 x, double r) = 0;
   virtual void remove(std::vector<int> &locals) = 0;
 
-  // Global reductions over all processes: of one value, and of each
-  // element of a vector (the same length on every process).
+  // Global reductions over all processes: of one value; and in one
+  // collective, of each element of two vectors (each the same length on
+  // every process), summed and taken the largest.
   virtual double sum(double v) = 0;
   virtual double max(double v) = 0;
-  virtual void sum_each(std::vector<double> &values) = 0;
-  virtual void max_each(std::vector<double> &values) = 0;
+  virtual void sum_and_max(std::vector<double> &sums, std::vector<double> &maxima) = 0;
 
   // Forward communication of per-atom values, as the host sends its atoms'
   // coordinates to their ghost copies: `values` holds `width` (at most

@@ -7,6 +7,8 @@
 
 #include <mpi.h>
 
+#include <algorithm>
+
 #include <utility>
 #include <vector>
 
@@ -120,8 +122,25 @@ public:
 
   double sum(double v) final { return reduce(v, MPI_SUM); }
   double max(double v) final { return reduce(v, MPI_MAX); }
-  void sum_each(std::vector<double> &values) final { reduce_each(values, MPI_SUM); }
-  void max_each(std::vector<double> &values) final { reduce_each(values, MPI_MAX); }
+  // One gather of both vectors; every rank adds and compares them in rank
+  // order, so all get the same.
+  void sum_and_max(std::vector<double> &sums, std::vector<double> &maxima) final
+  {
+    std::vector<double> mine(sums);
+    mine.insert(mine.end(), maxima.begin(), maxima.end());
+    int nprocs = 1;
+    MPI_Comm_size(comm_, &nprocs);
+    std::vector<double> all(mine.size() * static_cast<std::size_t>(nprocs));
+    MPI_Allgather(mine.data(), static_cast<int>(mine.size()), MPI_DOUBLE, all.data(),
+                  static_cast<int>(mine.size()), MPI_DOUBLE, comm_);
+    std::fill(sums.begin(), sums.end(), 0.0);
+    for (int p = 0; p < nprocs; ++p) {
+      const double *theirs = &all[static_cast<std::size_t>(p) * mine.size()];
+      for (std::size_t k = 0; k < sums.size(); ++k) sums[k] += theirs[k];
+      for (std::size_t k = 0; k < maxima.size(); ++k)
+        maxima[k] = std::max(maxima[k], theirs[sums.size() + k]);
+    }
+  }
   std::vector<double> gather_all(const std::vector<double> &mine) final
   {
     return mpi_gather_all(mine, comm_);
@@ -143,12 +162,6 @@ private:
     double out = 0;
     MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, op, comm_);
     return out;
-  }
-
-  void reduce_each(std::vector<double> &values, MPI_Op op)
-  {
-    MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, op,
-                  comm_);
   }
 
   MPI_Comm comm_;

@@ -149,12 +149,11 @@ double SoftRelaxation::reduce(double worst, double &power, double &vnorm, double
     const auto limbs = s->limbs();
     sums.insert(sums.end(), limbs.begin(), limbs.end());
   }
-  host_.sum_each(sums);
+  std::vector<double> maxima{worst, std::sqrt(moved)};
+  host_.sum_and_max(sums, maxima);
   power = ExactSum::from_limbs(&sums[0], unit);
   vnorm = std::sqrt(std::max(0.0, ExactSum::from_limbs(&sums[ExactSum::kLimbs], unit)));
   fnorm = std::sqrt(std::max(0.0, ExactSum::from_limbs(&sums[2 * ExactSum::kLimbs], unit)));
-  std::vector<double> maxima{worst, std::sqrt(moved)};
-  host_.max_each(maxima);
   moved_ = maxima[1];
   return maxima[0];
 }
