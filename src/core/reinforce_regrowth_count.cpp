@@ -47,8 +47,11 @@ public:
   {
     depth = INFINITY;
     std::vector<std::size_t> touching;
+    // Only the bars within R + largest: the grid may offer farther ones,
+    // and which it offers must not decide (the same on every process).
     grid_.for_each_near(x, R + largest_, [&](int k) {
       const double d = norm(x - centres_[k]);
+      if (!(d < R + largest_)) return;
       depth = std::min(depth, d - radii_[k]);
       if (d < R + radii_[k]) touching.push_back(static_cast<std::size_t>(k));
     });

@@ -35,8 +35,8 @@ constexpr int kStageSteps = 300;
 constexpr double kStageSettled = 1e-3;
 constexpr double kPullUntil = 0.97;
 constexpr int kPullSteps = 50;
-constexpr double kPull = 0.002;
-constexpr double kPullRange = 4;
+constexpr double kPull = 0.003;
+constexpr double kPullRange = 8;
 
 // What does not fit: while a stage leaves an overlap above kAbort rmin,
 // half of the growing seeds above it are given up together (the deepest

@@ -144,13 +144,19 @@ Zone::Zone(HostHooks &host, const AtomArrays &a, const std::vector<Seed> &seeds,
 void Zone::find_bars(double range)
 {
   CellGrid grid(range);
+  double largest = 0;
   for (std::size_t k = 0; k < bodies.size(); ++k)
-    if (bodies[k].rebar) grid.insert(bodies[k].x0, static_cast<int>(k));
+    if (bodies[k].rebar) {
+      grid.insert(bodies[k].x0, static_cast<int>(k));
+      largest = std::max(largest, bodies[k].R);
+    }
   for (int m : moving) {
     ZoneBody &b = bodies[static_cast<std::size_t>(m)];
     if (b.growing) continue;
     double nearest = range;
-    grid.for_each_near(b.x0, range, [&](int k) {
+    // Every bar whose surface lies within range (the grid may offer more:
+    // the test below decides, the same on every process).
+    grid.for_each_near(b.x0, range + largest, [&](int k) {
       const ZoneBody &o = bodies[static_cast<std::size_t>(k)];
       const double gap = norm(o.x0 - b.x0) - o.R;
       if (gap < nearest || (gap == nearest && b.bar >= 0 && o.id < bodies[b.bar].id)) {
