@@ -15,7 +15,7 @@ REF_NAME = {"around": "grow_packing", "lammps": "make_packing.lmp"}   # referenc
 SERIES = ("speedup", "gap", "rbar", "scaling")    # scene names of the series (not compared scenes)
 METHODS = {m["key"]: m for m in csv.DictReader(open(os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                                                  "methods.tsv")), delimiter="\t")}
-DEFAULTS, FIT, PUSH, EACH, DELETE = (METHODS[k]["method"] for k in ("defaults", "fit", "push", "each", "delete_max"))
+DEFAULTS, FIT, PUSH, NO_REGROWTH, DELETE = (METHODS[k]["method"] for k in ("defaults", "fit", "push", "norgrow", "delete_max"))
 
 
 # --- load -------------------------------------------------------------------------------------------------------
