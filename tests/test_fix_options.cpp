@@ -484,27 +484,33 @@ TEST(Summary, ReportsCountsAndTime)
 }
 
 // The WARNING on matrix lost by the regrowth: targets left shrunk, or
-// deleted beyond those whose centre lies inside the bars, and the share of
-// their volume the targets keep; none otherwise.
+// deleted beyond those whose centre lies inside the bars, the share of
+// their volume the targets keep, and a jam; none otherwise.
 TEST(FixOptions, LostMatrixWarning)
 {
   Stats s;    // 3 deleted, all 3 centred inside the bars
   s.unplaced = s.displaced = 3;
   s.volume_before = 8;
   s.volume_after = 6;
-  EXPECT_EQ(lost_matrix_warning(s), "");
+  EXPECT_EQ(lost_matrix_warning(s, false), "");
   s.shrunk = 2;
-  EXPECT_EQ(lost_matrix_warning(s), "Fix reinforce/invert regrowth left 2 targets smaller than "
+  EXPECT_EQ(lost_matrix_warning(s, false), "Fix reinforce/invert regrowth left 2 targets smaller than "
                                     "their own radius: the targets keep 0.75 of their volume");
   s.displaced = 1;
-  EXPECT_EQ(lost_matrix_warning(s),
+  EXPECT_EQ(lost_matrix_warning(s, false),
             "Fix reinforce/invert regrowth left 2 targets smaller than their own radius and "
             "deleted 2 targets beyond the 1 whose centre lies inside the bars: the targets keep "
             "0.75 of their volume");
   s.shrunk = 0;
-  EXPECT_EQ(lost_matrix_warning(s),
+  EXPECT_EQ(lost_matrix_warning(s, false),
             "Fix reinforce/invert regrowth deleted 2 targets beyond the 1 whose centre lies "
             "inside the bars: the targets keep 0.75 of their volume");
+  // A zone that jammed says so, and that it went back.
+  EXPECT_EQ(lost_matrix_warning(s, true),
+            "Fix reinforce/invert regrowth deleted 2 targets beyond the 1 whose centre lies "
+            "inside the bars: the targets keep 0.75 of their volume; its zone jammed (shrunk and "
+            "grown back, the matrix did not reach its density again) and went back to the "
+            "relocation's scene");
   // On only with the regrowth.
   EXPECT_TRUE(regrowth_on(parse_fix_arguments({"0", "bars"})));
   EXPECT_FALSE(regrowth_on(parse_fix_arguments({"0", "bars", "regrow", "no"})));

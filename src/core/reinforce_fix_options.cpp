@@ -244,7 +244,7 @@ std::string summary_line(const Stats &t, bool keep_unplaced, double seconds, int
   return buf;
 }
 
-std::string lost_matrix_warning(const Stats &t)
+std::string lost_matrix_warning(const Stats &t, bool jammed)
 {
   const long long shrunk = static_cast<long long>(t.shrunk);
   const long long outside = static_cast<long long>(t.unplaced - t.displaced);
@@ -264,7 +264,11 @@ std::string lost_matrix_warning(const Stats &t)
   // The share of their volume the targets keep (relocated over before).
   const double kept = t.volume_before > 0 ? t.volume_after / t.volume_before : 0;
   std::snprintf(part, sizeof part, ": the targets keep %.2f of their volume", kept);
-  return "Fix reinforce/invert regrowth " + what + part;
+  what += part;
+  if (jammed)
+    what += "; its zone jammed (shrunk and grown back, the matrix did not reach its density "
+            "again) and went back to the relocation's scene";
+  return "Fix reinforce/invert regrowth " + what;
 }
 
 }    // namespace reinforce

@@ -79,6 +79,6 @@ std::string summary_line(const Stats &totals, bool keep_unplaced, double seconds
 // left smaller than their own radius, or deleted beyond those whose centre
 // lies inside the bars (and the share of their volume the targets keep);
 // empty when neither.
-std::string lost_matrix_warning(const Stats &totals);
+std::string lost_matrix_warning(const Stats &totals, bool jammed);
 
 }    // namespace reinforce

@@ -267,7 +267,9 @@ void ReinforceFixBase::invoke()
   warn_anchors();
   // Once per run: with N > 0 every invocation would repeat it.
   const std::string lost =
-      reinforce::regrowth_on(options) ? reinforce::lost_matrix_warning(t.stats) : "";
+      reinforce::regrowth_on(options)
+          ? reinforce::lost_matrix_warning(t.stats, t.regrowth.jammed > 0)
+          : "";
   if (!lost.empty() && !lost_matrix_warned) {
     warn(lost);
     lost_matrix_warned = true;
