@@ -105,7 +105,12 @@ double SoftRelaxation::forces()
         const double rj = radius_[n.j];
         if (!(rj > 0)) continue;
         double contact = ri + rj - n.allowed;
-        if (pad_ > 0 && movable_[n.j]) contact += pad_ * std::min(ri, rj);
+        // Padded: a pair of movable spheres, unless the packing had it
+        // overlapping by half a pad or more at the start (such a contact
+        // keeps its own overlap, never more: opening it would need room a
+        // settled packing has not got).
+        const double pad = pad_ * std::min(ri, rj);
+        if (pad > 0 && movable_[n.j] && n.allowed < 0.5 * pad) contact += pad;
         const Vec3 d = xi - x[n.j];
         const double d2 = norm2(d);
         if (d2 >= contact * contact) continue;
