@@ -34,6 +34,17 @@ SoftRelaxation::SoftRelaxation(HostHooks &host, Zone &zone, const Domain &domain
   built_.assign(n, Vec3{});
   v_.assign(n, Vec3{});
   f_.assign(n, Vec3{});
+  // Whether a move can meet a wall or leave the region: a sphere whose
+  // cap (and radius) around where it started lies wholly clear of every
+  // wall and inside the region cannot, and is not tested at each step.
+  walled_.assign(n, 0);
+  for (std::size_t m = 0; m < n; ++m) {
+    const ZoneBody &b = bodies[static_cast<std::size_t>(zone_.moving[m])];
+    const double reach = b.R + b.cap;
+    const bool walls = domain_.walls && !(domain_.walls->distance(b.x0) > reach);
+    const bool region = domain_.region && !domain_.region(wrapped_into_box(b.x0, domain_), reach);
+    walled_[m] = walls || region;
+  }
 }
 
 // Each body's radius now (the movable ones at the scale; 0: absent).
@@ -167,7 +178,6 @@ double SoftRelaxation::reduce(double worst, double &power, double &vnorm, double
 // the box faces, and not where the walls or region refuse it.
 void SoftRelaxation::move(double dt)
 {
-  const bool walls = domain_.region || domain_.walls;
   for (std::size_t m = 0; m < zone_.moving.size(); ++m) {
     const int i = zone_.moving[m];
     const ZoneBody &b = zone_.bodies[static_cast<std::size_t>(i)];
@@ -199,7 +209,7 @@ void SoftRelaxation::move(double dt)
         v[a] = 0;
       }
     }
-    if (walls && !admissible(x, to, b.R, domain_, tol_)) {
+    if (walled_[m] && !admissible(x, to, b.R, domain_, tol_)) {
       v = Vec3{};
       continue;
     }

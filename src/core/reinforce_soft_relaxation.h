@@ -79,6 +79,7 @@ private:
   std::vector<unsigned char> movable_;        // per body
   std::vector<int> rank_;                     // bodies' (id, place) order
   std::vector<int> slot_;                     // a body's index in `moving`, or -1
+  std::vector<unsigned char> walled_;         // per moving body: a wall or region within reach
 
   void update_radii();
   void build_lists();
