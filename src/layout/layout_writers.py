@@ -59,6 +59,8 @@ class Outputs:
     def file(self, path, write):
         """write(out) into a temporary file beside path (or, for a device
         or a pipe, into path itself by write_in_place)."""
+        if not os.path.basename(path):    # "" or "folder/": no file name to rename onto
+            raise OutputError(path, os.strerror(errno.EISDIR if path else errno.ENOENT))
         try:
             mode = os.stat(path).st_mode
         except FileNotFoundError:

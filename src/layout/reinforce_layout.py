@@ -142,13 +142,13 @@ def run(argv, outputs):
                                                              " ".join("%.6g" % v for v in extent[1]))]
     decimals = options.get("decimals")
     source = os.path.basename(args.description)
-    if args.data:
+    if args.data is not None:
         outputs.file(args.data, lambda out: W.write_data(out, clumps, box or extent, summary, decimals, source))
         report.append("wrote %s (%d atoms)" % (args.data, spheres))
-    if args.molecules:
+    if args.molecules is not None:
         W.write_molecules(outputs, args.molecules, templates, summary, decimals)
         report.append("wrote %d molecule files in %s" % (len(templates), args.molecules))
-    if args.liggghts:
+    if args.liggghts is not None:
         ntry = options.get("ntry", 1000000)
         outputs.file(args.liggghts, lambda out: W.write_liggghts(out, templates, summary, decimals, ntry))
         report.append("wrote %s (%d multisphere templates)" % (args.liggghts, len(templates)))

@@ -8,11 +8,12 @@ import os
 import random
 import re
 import stat
+import subprocess
 import tempfile
 import threading
 import unittest
 
-from layout_output import atoms, command, lay_out, run, snapshot
+from layout_output import COMMAND, TIMEOUT, atoms, command, lay_out, run, snapshot
 
 EXACT = 1e-12    # relative: rounding of a few operations
 
@@ -581,6 +582,8 @@ class BadOutputs(unittest.TestCase):
         (["--data", "adir", "--molecules", "newmol"], "cannot write", "adir: Is a directory"),
         (["--data", "new.data", "--liggghts", "adir"], "cannot write", "adir: Is a directory"),
         (["--data", "afile/x.data"], "cannot write", "afile/x.data: Not a directory"),
+        (["--data", "newdir/", "--molecules", "newmol"], "cannot write", "newdir/: Is a directory"),
+        (["--liggghts", "", "--data", "new.data"], "cannot write", "write : No such file or directory"),
         (["--data", "new.data", "--liggghts", "missing/t.liggghts"], "cannot write",
          "missing/t.liggghts: No such file or directory"),
         (["--molecules", "afile", "--data", "new.data"], "cannot write", "afile: Not a directory"),
@@ -593,7 +596,7 @@ class BadOutputs(unittest.TestCase):
     ]
     STDOUT = "cannot write standard output"
 
-    def setUp(self):
+    def setUp(self):    # also for each case: one that wrote would spoil the next
         self.folder = tempfile.mkdtemp(prefix="layout_test.")
         for name, text in (("description.txt", GOOD), ("afile", "a file\n"), ("old.data", "old data\n"),
                            ("mol/keep.txt", "kept\n")):
@@ -607,6 +610,7 @@ class BadOutputs(unittest.TestCase):
     def test_each(self):
         for args, gist, detail in self.CASES:
             with self.subTest(args=args):
+                self.setUp()
                 status, out, err = command(["description.txt"] + args, self.folder)
                 self.assertIn(detail, refused(self, status, out, err, gist))
                 self.assertEqual(snapshot(self.folder), self.before)
@@ -689,6 +693,53 @@ class Outputs(unittest.TestCase):
         for k, row in enumerate(rows):
             self.assertLess(dist([values[4 * k + j] + centre[j] for j in range(3)], row[2:]), 1e-15)
             self.assertEqual(values[4 * k + 3], 0.005)
+
+    def test_nothing_beside_the_outputs(self):    # the temporary files are gone, the old files replaced
+        folder = tempfile.mkdtemp(prefix="layout_test.")
+        with open(os.path.join(folder, "description.txt"), "w") as f:
+            f.write(GOOD)
+        os.mkdir(os.path.join(folder, "mol"))
+        for name in ("rebar.data", "mol/bar_l1.mol", "mol/other.mol"):
+            with open(os.path.join(folder, name), "w") as f:
+                f.write("old\n")
+        os.chmod(os.path.join(folder, "rebar.data"), 0o640)
+        status, out, err = command(["description.txt", "--data", "rebar.data", "--molecules", "mol",
+                                    "--liggghts", "t.liggghts"], folder)
+        self.assertEqual(status, 0, err)
+        self.assertEqual(sorted(snapshot(folder)), ["description.txt", "mol", "mol/bar_l1.mol", "mol/other.mol",
+                                                    "rebar.data", "t.liggghts"])
+        self.assertEqual(read(os.path.join(folder, "mol", "other.mol")), "old\n")
+        self.assertIn("Coords", read(os.path.join(folder, "mol", "bar_l1.mol")))
+        self.assertEqual(len(atoms(os.path.join(folder, "rebar.data"))), 322)
+        self.assertEqual(stat.S_IMODE(os.stat(os.path.join(folder, "rebar.data")).st_mode), 0o640)
+        self.assertIn("wrote rebar.data (322 atoms)", out)
+
+    def test_pipe_written_in_place(self):    # renamed over, a pipe (or /dev/null) would become a file
+        folder = tempfile.mkdtemp(prefix="layout_test.")
+        with open(os.path.join(folder, "description.txt"), "w") as f:
+            f.write(GOOD)
+        pipe = os.path.join(folder, "pipe")
+        os.mkfifo(pipe)
+        got = []
+        reader = threading.Thread(target=lambda: got.append(read(pipe)), daemon=True)
+        reader.start()
+        status, _, err = command(["description.txt", "--data", "rebar.data", "--liggghts", "pipe"], folder)
+        reader.join(TIMEOUT)
+        self.assertEqual(status, 0, err)
+        self.assertTrue(stat.S_ISFIFO(os.stat(pipe).st_mode))
+        self.assertRegex(got[0] if got else "", r'variable bar_l1 string "nspheres 322 ')
+        self.assertEqual(sorted(os.listdir(folder)), ["description.txt", "pipe", "rebar.data"])
+
+    def test_reader_gone_files_written(self):    # `| head`: no error, the files still in place
+        folder = tempfile.mkdtemp(prefix="layout_test.")
+        with open(os.path.join(folder, "description.txt"), "w") as f:
+            f.write(GOOD)
+        p = subprocess.Popen([COMMAND, "description.txt", "--data", "rebar.data"], cwd=folder,
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+        p.stdout.close()
+        err = p.stderr.read()
+        self.assertEqual((p.wait(TIMEOUT), err), (0, b""))
+        self.assertEqual(len(atoms(os.path.join(folder, "rebar.data"))), 322)
 
 
 if __name__ == "__main__":
