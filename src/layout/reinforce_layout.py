@@ -179,7 +179,11 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    # Stopped by a signal (a timeout): the temporary files go as on an error.
+    # Stopped (Ctrl-C, a timeout's SIGTERM): main's clean-up runs as on an
+    # error, then the status a shell gives a signal, without a traceback.
     signal.signal(signal.SIGTERM, lambda signum, frame: sys.exit(128 + signum))
     sys.stdout.reconfigure(errors="surrogateescape")    # paths as given, undecodable bytes too
-    sys.exit(main(sys.argv[1:]))
+    try:
+        sys.exit(main(sys.argv[1:]))
+    except KeyboardInterrupt:
+        sys.exit(128 + signal.SIGINT)

@@ -7,10 +7,12 @@ import math
 import os
 import random
 import re
+import signal
 import stat
 import subprocess
 import tempfile
 import threading
+import time
 import unittest
 
 from layout_output import COMMAND, TIMEOUT, atoms, command, lay_out, run, snapshot
@@ -637,6 +639,26 @@ class BadOutputs(unittest.TestCase):
         self.assertIn("pipe: Broken pipe", refused(self, status, out, err, "cannot write"))
         self.assertEqual(snapshot(self.folder), before)
         self.assertTrue(stat.S_ISFIFO(os.stat(pipe).st_mode))
+
+    def test_stopped_leaves_nothing(self):
+        """Stopped while it waits to write a pipe nobody reads (the data
+        file staged by then): no temporary file left, no traceback."""
+        for signum in (signal.SIGTERM, signal.SIGINT):
+            with self.subTest(signal=signum):
+                self.setUp()
+                os.mkfifo(os.path.join(self.folder, "pipe"))
+                before = snapshot(self.folder)
+                p = subprocess.Popen([COMMAND, "description.txt", "--data", "new.data", "--molecules", "newmol",
+                                      "--liggghts", "pipe"], cwd=self.folder, stdout=subprocess.PIPE,
+                                     stderr=subprocess.PIPE)
+                waited = 0.0
+                while not any(n.startswith(".new.data.") for n in os.listdir(self.folder)) and waited < TIMEOUT:
+                    time.sleep(0.05)
+                    waited += 0.05
+                p.send_signal(signum)
+                out, err = p.communicate(timeout=TIMEOUT)
+                self.assertEqual((p.returncode, out, err), (128 + signum, b"", b""))
+                self.assertEqual(snapshot(self.folder), before)
 
     def test_standard_output_full(self):
         if not os.path.exists("/dev/full"):
