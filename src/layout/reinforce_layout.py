@@ -98,8 +98,8 @@ def read_description(path):
             data = f.read()
     except OSError as e:
         raise Failure("cannot read %s: %s" % (path, e.strerror or e))
-    # utf-8-sig: a byte-order mark is no part of the first item; bytes that
-    # are no UTF-8 can only be in comments (anything else refuses them).
+    # utf-8-sig: a byte-order mark is no part of the first item. Bytes that
+    # are not UTF-8 pass in comments; in a value its check refuses them.
     return data.decode("utf-8-sig", errors="surrogateescape")
 
 
