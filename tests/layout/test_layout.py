@@ -396,7 +396,8 @@ class BadDescriptions(unittest.TestCase):
         ("fibres lo=0,0,0 hi=1,1,1 length=0.1 diameter=0.01 count=5 fraction=0.01 seed=1",
          "give count= or fraction=, not both"),
         ("fibres lo=0,0,0 hi=1,1,1 length=0.1 diameter=0.01 seed=1", "fibres need count= or fraction="),
-        ("bar from=0,0,0 to=1,0,0 diameter=0.01 spacing=0.005 smoothness=0.1", "give spacing= or smoothness=, not both"),
+        ("bar from=0,0,0 to=1,0,0 diameter=0.01 spacing=0.005 smoothness=0.1",
+         "give spacing= or smoothness=, not both"),
         ("bar from=0,0,0 to=1,0,0 diameter=0.01 &", "the item ends with & but no line follows"),
         ("defaults diameter=0.01 name=top", "name= is for one item, not for defaults"),
         ("box lo=0,0,0 hi=1,1,1\nbox lo=0,0,0 hi=2,2,2", "a second box item (the first is line 3)"),
@@ -420,7 +421,8 @@ class BadDescriptions(unittest.TestCase):
         ("bar from=0,0,0 to=1,0,0 diameter=0.01 density=0", "density must be > 0"),
         ("bar from=0,0,0 to=1,0,0 diameter=0.01 spacing=0.02", "spacing must be > 0 and < the diameter"),
         ("bar from=0,0,0 to=1,0,0 diameter=0.01 smoothness=1.5", "smoothness must be > 0 and < 1"),
-        ("polyline points=0,0,0;1,0,0;1,1,0 diameter=0.01 bend=0.002", "bend: the mandrel radius 0.002 is tighter than the bar"),
+        ("polyline points=0,0,0;1,0,0;1,1,0 diameter=0.01 bend=0.002",
+         "bend: the mandrel radius 0.002 is tighter than the bar"),
         ("cage axis=x from=0 to=1 centre=0,0 width=0.3 height=0.3 cover=0.02 every=0.5 diameter=0.01 "
          "stirrup_diameter=0.006 stirrup_bend=0.001", "stirrup_bend: the mandrel radius 0.001 is tighter than the bar"),
         ("bar from=0,0,0 to=1,0,0 diameter=0.01 hook_end=90 hook_length=-0.1", "hook_length must be >= 0"),
@@ -485,7 +487,8 @@ class BadDescriptions(unittest.TestCase):
             with self.subTest(text=text):
                 status, out, err, folder = run("# a comment line\n\n" + text + "   # trailing comment\n", *ALL_OUTPUTS)
                 line = refused(self, status, out, err, gist)
-                self.assertRegex(line, r"^reinforce_layout: ERROR: \S*description.txt line %d: " % (3 + text.count("\n")))
+                where = r"^reinforce_layout: ERROR: \S*description.txt line %d: " % (3 + text.count("\n"))
+                self.assertRegex(line, where)
                 self.assertEqual(os.listdir(folder), ["description.txt"])
 
     def test_nothing_laid_out(self):
