@@ -15,13 +15,20 @@ class LayoutError(Exception):
         self.line = line
 
 
+# Decimal or exponent notation only: float() alone would also take 1_000,
+# digits of other scripts and infinity.
+NUMBER = re.compile(r"[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?")
+
+
 def number(text):
     try:
         value = float(text)
     except ValueError:
-        raise ValueError("expected a number, got '%s'" % text)
-    if not math.isfinite(value):
+        value = None
+    if value is not None and not math.isfinite(value):
         raise ValueError("expected a finite number, got '%s'" % text)
+    if value is None or not NUMBER.fullmatch(text):
+        raise ValueError("expected a number, got '%s'" % text)
     return value
 
 

@@ -100,9 +100,14 @@ def build_fibres(item):
             item.error("fraction %g of this box is less than one fibre" % fraction)
     apart = item.get("apart", "no") == "yes"
     tries = item.get("tries", MAX_TRIES)
+    if tries < 1:
+        item.error("tries must be >= 1, got %d" % tries)
+    if item.get("seed") < 0:    # Python seeds with |seed|: -5 would silently repeat 5
+        item.error("seed must be >= 0, got %d" % item.get("seed"))
     rng = random.Random(item.get("seed"))
     grid = Grid(lo, length)
     template = chain.chain([P.Line((-0.5 * axis, 0.0, 0.0), (0.5 * axis, 0.0, 0.0))], closed=False)
+    chain.repeated(count, len(template))
     clumps = []
     for n in range(count):
         for attempt in range(tries):

@@ -11,7 +11,7 @@ import layout_spacing as S
 
 AXES = {"x": (0, 1, 2), "y": (1, 0, 2), "z": (2, 0, 1)}    # axis, then the section's u, v
 HOOK_LENGTH = {90.0: 12.0, 135.0: 6.0, 180.0: 4.0}    # straight leg after the bend, in bar diameters
-MAX_SPHERES = 10 ** 7    # per clump and per repeat: beyond it a typo, not a scene
+MAX_SPHERES = 10 ** 7    # per clump, per repeat and per item: beyond it a typo, not a scene
 
 
 class Clump:
@@ -79,6 +79,13 @@ class Chain:
                 ripple = max(ripple, S.bend_ripple(self.radius, p.radius, S.arc_chord(p.radius, actual)))
         self.ripples.append(ripple)
         return centres
+
+    def repeated(self, count, spheres):
+        """Refuses count clumps of this many spheres each beyond MAX_SPHERES
+        in all, before they are made."""
+        if count * spheres > MAX_SPHERES:
+            self.item.error("%d clumps of %d spheres would be more than %d spheres in one item: "
+                            "raise smoothness or spacing, or repeat less" % (count, spheres, MAX_SPHERES))
 
     def clump(self, name, centres):
         """name: the kind and line (bar_l5, stirrup_l7_3), or the item's
@@ -160,13 +167,16 @@ def section_point(axis, along, u, v):
     return tuple(p)
 
 
-def positions(item, first, last, every):
+def positions(item, first, last, every, keys=("from", "to", "every")):
+    """first, first + every, ... up to last; keys: the names of the three
+    in the description, for the messages."""
     if every <= 0.0:
-        item.error("every must be > 0, got %g" % every)
+        item.error("%s must be > 0, got %g" % (keys[2], every))
     if last < first:
-        item.error("to (%g) must not be below from (%g)" % (last, first))
+        item.error("%s (%g) must not be below %s (%g)" % (keys[1], last, keys[0], first))
     if (last - first) / every > MAX_SPHERES:
-        item.error("every %g repeats more than %d times between %g and %g" % (every, MAX_SPHERES, first, last))
+        item.error("%s %g repeats more than %d times between %g and %g"
+                   % (keys[2], every, MAX_SPHERES, first, last))
     n = int(math.floor((last - first) / every * (1.0 + 1e-12))) + 1
     return [first + k * every for k in range(n)]
 
@@ -190,8 +200,10 @@ def build_stirrups(item):
     axis = item.get("axis")
     cu, cv = item.get("centre")
     clumps = []
-    for k, x in enumerate(positions(item, item.get("from"), item.get("to"), item.get("every"))):
+    planes = positions(item, item.get("from"), item.get("to"), item.get("every"))
+    for k, x in enumerate(planes):
         centres = stirrup_loop(chain, axis, x, cu, cv, item.get("width"), item.get("height"), "bend")
+        chain.repeated(len(planes), len(centres))
         clumps.append(chain.clump("stirrup_l%d_%d" % (item.line, k + 1), centres))
     return clumps, chain.summary("stirrups", len(clumps), sum(len(c.centres) for c in clumps))
 
@@ -213,15 +225,15 @@ def cage_bar_positions(item, hw, hh, stirrup_bend, rs, rb):
     for side, count in ((-1.0, item.get("bars_bottom", 2)), (1.0, item.get("bars_top", 2))):
         if count < 2:
             item.error("bars_bottom and bars_top must be >= 2 (the corner bars), got %d" % count)
+        if count > 2 and 2.0 * corner_u / (count - 1) < 2.0 * rb:
+            item.error("%d bars of diameter %g do not fit side by side in the stirrup"
+                       % (count, 2.0 * rb))
         for k in range(count):
             if k == 0 or k == count - 1:
                 u, v = (-corner_u if k == 0 else corner_u), side * corner_v
             else:
                 u, v = -corner_u + 2.0 * corner_u * k / (count - 1), side * leg_v
             bars.append((u, v, side))
-        if count > 2 and 2.0 * corner_u / (count - 1) < 2.0 * rb:
-            item.error("%d bars of diameter %g do not fit side by side in the stirrup"
-                       % (count, 2.0 * rb))
     return bars
 
 
@@ -241,8 +253,10 @@ def build_cage(item):
         item.error("zero-length cage: to (%g) must be above from (%g)" % (last, first))
     clumps = []
     s_first, s_last = item.get("stirrups_from", first), item.get("stirrups_to", last)
-    for k, x in enumerate(positions(item, s_first, s_last, item.get("every"))):
+    planes = positions(item, s_first, s_last, item.get("every"), ("stirrups_from", "stirrups_to", "every"))
+    for k, x in enumerate(planes):
         centres = stirrup_loop(stirrups, axis, x, cu, cv, width, height, "stirrup_bend")
+        stirrups.repeated(len(planes), len(centres))
         clumps.append(stirrups.clump("stirrup_l%d_%d" % (item.line, k + 1), centres))
     n_stirrups = len(clumps)
     rs = stirrups.radius
@@ -269,20 +283,24 @@ def build_mesh(item):
     if P.norm(normal) <= 1e-12 * la * lb:
         item.error("a and b are parallel: the mesh has no plane")
     family_a = Chain(item)
-    diameter_b = dict(item.values)
-    diameter_b["diameter"] = item.get("diameter_b", item.get("diameter"))
-    family_b = Chain(type(item)(item.kind, item.line, diameter_b))
+    with_b = dict(item.values)
+    with_b["diameter_b"] = item.get("diameter_b", item.get("diameter"))
+    family_b = Chain(type(item)(item.kind, item.line, with_b), "diameter_b")
     lift = P.scale(P.unit(normal), family_a.radius + family_b.radius)    # b bars lie on the a bars
     ua, ub = P.unit(a), P.unit(b)
     clumps = []
-    for chain, along, across, length, every, off, tag in (
-            (family_a, a, ub, lb, item.get("every_a"), (0.0, 0.0, 0.0), "a"),
-            (family_b, b, ua, la, item.get("every_b"), lift, "b")):
-        for k, t in enumerate(positions(item, 0.0, length, every)):
+    counts = []
+    for chain, along, across, length, key, off, tag in (
+            (family_a, a, ub, lb, "every_a", (0.0, 0.0, 0.0), "a"),
+            (family_b, b, ua, la, "every_b", lift, "b")):
+        offsets = positions(item, 0.0, length, item.get(key), ("start", "end", key))
+        counts.append(len(offsets))
+        for k, t in enumerate(offsets):
             start = P.add(P.add(corner, P.scale(across, t)), off)
             centres = chain.chain([P.Line(start, P.add(start, along))], closed=False)
+            chain.repeated(len(offsets), len(centres))
             clumps.append(chain.clump("mesh_l%d_%s%d" % (item.line, tag, k + 1), centres))
-    na = len(positions(item, 0.0, lb, item.get("every_a")))
+    na = counts[0]
     return clumps, (family_a.summary("bars along a", na, sum(len(c.centres) for c in clumps[:na])) + "\n" +
                     family_b.summary("bars along b", len(clumps) - na,
                                      sum(len(c.centres) for c in clumps[na:])))

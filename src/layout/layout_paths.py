@@ -116,7 +116,7 @@ def hook(end, tangent, towards, radius, angle_deg, length):
     leg of `length`."""
     w = sub(towards, scale(tangent, dot(towards, tangent)))
     if norm(w) < 1e-12 * max(1.0, norm(towards)):
-        raise ValueError("the hook direction is parallel to the bar's end")
+        raise ValueError("the hook direction (hook_towards) is zero or parallel to the bar's end")
     w = unit(w)
     angle = math.radians(angle_deg)
     arc = Arc(add(end, scale(w, radius)), scale(w, -1.0), tangent, radius, angle)

@@ -2,10 +2,12 @@
 parses its data file (atoms by clump) and molecule files. Knows nothing of
 the command's own modules: the tests check the written result."""
 import os
+import stat
 import subprocess
 import tempfile
 
 COMMAND = os.environ.get("REINFORCE_LAYOUT", "reinforce_layout")
+TIMEOUT = 60    # seconds: a run that hangs fails its test rather than the whole class's ctest entry
 
 
 def run(description, *outputs):
@@ -19,8 +21,33 @@ def run(description, *outputs):
     for o in outputs:
         args += ["--" + o, os.path.join(folder, {"data": "rebar.data", "molecules": "mol",
                                                  "liggghts": "templates.liggghts"}[o])]
-    p = subprocess.run(args, capture_output=True, text=True)
+    p = subprocess.run(args, capture_output=True, text=True, timeout=TIMEOUT)
     return p.returncode, p.stdout, p.stderr, folder
+
+
+def command(args, cwd, stdout=subprocess.PIPE):
+    """Runs the command with these arguments in cwd; returns (status,
+    stdout, or "" when it went elsewhere, stderr)."""
+    p = subprocess.run([COMMAND] + args, cwd=cwd, stdout=stdout, stderr=subprocess.PIPE, text=True,
+                       timeout=TIMEOUT)
+    return p.returncode, p.stdout or "", p.stderr
+
+
+def snapshot(folder):
+    """Everything under folder: relative path -> its bytes, None for a
+    folder, "special" for anything else (a pipe: reading it would block)."""
+    found = {}
+    for top, folders, files in os.walk(folder):
+        for name in folders:
+            found[os.path.relpath(os.path.join(top, name), folder)] = None
+        for name in files:
+            path = os.path.join(top, name)
+            if stat.S_ISREG(os.lstat(path).st_mode):
+                with open(path, "rb") as f:
+                    found[os.path.relpath(path, folder)] = f.read()
+            else:
+                found[os.path.relpath(path, folder)] = "special"
+    return found
 
 
 def atoms(data_path):

@@ -7,9 +7,15 @@ import math
 import os
 import random
 import re
+import signal
+import stat
+import subprocess
+import tempfile
+import threading
+import time
 import unittest
 
-from layout_output import atoms, lay_out, run
+from layout_output import COMMAND, TIMEOUT, atoms, command, lay_out, run, snapshot
 
 EXACT = 1e-12    # relative: rounding of a few operations
 
@@ -333,48 +339,174 @@ class Fibres(unittest.TestCase):
         self.assertNotEqual(read(os.path.join(folder, "rebar.data"), "rb"), written[0])
 
 
+DOCS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "docs", "layout.md")
+ALL_OUTPUTS = ("data", "molecules", "liggghts")
+GOOD = "bar from=0,0,0 to=1,0,0 diameter=0.01\n"    # one clump, bar_l1
+
+
+def refused(test, status, out, err, gist):
+    """Status 1, nothing on stdout, one ERROR line on stderr holding gist;
+    returns the line."""
+    test.assertEqual(status, 1, err)
+    test.assertEqual(out, "")
+    lines = err.splitlines()
+    test.assertEqual(len(lines), 1, err)
+    test.assertTrue(lines[0].startswith("reinforce_layout: ERROR: "), lines[0])
+    test.assertIn(gist, lines[0])
+    return lines[0]
+
+
+def documented():
+    """The examples of docs/layout.md's Errors tables: the backquoted text
+    of each row's last cell."""
+    section = read(DOCS).split("\n## Errors\n", 1)[1].split("\n## ", 1)[0]
+    rows = [line for line in section.splitlines() if line.startswith("| ") and not line.startswith("| refused")]
+    return set(g for row in rows for g in re.findall(r"`([^`]*)`", row.rsplit(" | ", 1)[1]))
+
+
 class BadDescriptions(unittest.TestCase):
     """A bad description: status 1, one ERROR line on stderr naming the
-    line and the fault, nothing on stdout."""
+    item's line and the fault, nothing on stdout, and nothing written of
+    any output. One case per check of docs/layout.md's Errors tables; the
+    faulty item is the case's last line."""
     CASES = [
-        ("bar from=0,0,0 to=0,0,0 diameter=0.01", "zero-length bar"),
-        ("bar from=0,0,0 to=1,0,0 diameter=-0.01", "diameter must be > 0"),
-        ("polyline points=0,0,0;1,0,0;1,1,0 diameter=0.01 bend=0.002", "tighter than the bar"),
-        ("fibres lo=0,0,0 hi=0.02,0.1,0.1 length=0.03 diameter=0.001 count=5 seed=1", "longer than its box"),
+        # the text
+        ("bar from=0,0,0 to=1,0,0 diameter=0.01 =3", "expected key=value"),
+        ("rod from=0,0,0 to=1,0,0", "unknown item 'rod'"),
         ("bar from=0,0,0 to=1,0,0 diameter=0.01 colour=red", "unknown key 'colour'"),
+        ("bar from=0,0,0 to=1,0,0 diameter=0.01 diameter=0.02", "key 'diameter' given twice"),
+        ("bar to=1,0,0 diameter=0.01", "bar needs from="),
+        ("bar from=0,0,0 to=1,0,0", "bar needs diameter="),
+        ("cage axis=x from=0 to=1 centre=0,0 width=0.3 height=0.3 cover=0.02 every=0.5 diameter=0.01",
+         "cage needs stirrup_diameter="),
+        ("bar from=0,0,0 to=1,0,0 diameter=0.01 type=1_0", "expected a number, got '1_0'"),
+        ("bar from=0,0,0 to=1,0,0 diameter=0.01 type=0x10", "expected a number, got '0x10'"),
+        ("bar from=0,0,0 to=1,0,0 diameter=\u0661", "expected a number, got '\u0661'"),    # an Arabic-Indic 1
+        ("bar from=0,0,0 to=1,0,0 diameter=one", "expected a number, got 'one'"),
         ("bar from=0,0,0 to=nan,0,0 diameter=0.01", "expected a finite number, got 'nan'"),
         ("bar from=0,0,0 to=1,0,0 diameter=inf", "expected a finite number, got 'inf'"),
         ("bar from=0,0,0 to=1,0,0 diameter=0.01 spacing=-1e400", "expected a finite number"),
+        ("bar from=0,0,0 to=1,0,0 diameter=0.01 type=1.5", "expected a whole number"),
         ("bar from=0,0,0 to=1,0 diameter=0.01", "expected 3 comma-separated numbers"),
-        ("rod from=0,0,0 to=1,0,0", "unknown item 'rod'"),
-        ("bar to=1,0,0 diameter=0.01", "bar needs from="),
-        ("bar from=0,0,0 to=1,0,0 diameter=0.01 smoothness=1.5", "smoothness must be > 0 and < 1"),
-        ("bar from=0,0,0 to=1,0,0 diameter=0.01 spacing=0.02", "spacing must be > 0 and < the diameter"),
+        ("polyline points=0,0,0 diameter=0.01", "expected at least two points"),
+        ("stirrups axis=w from=0 to=1 every=0.5 centre=0,0 width=0.1 height=0.1 diameter=0.01",
+         "expected one of x, y, z"),
+        ("bar from=0,0,0 to=1,0,0 diameter=0.01 name=1st", "a name is a letter then letters, digits or _"),
         ("bar from=0,0,0 to=1,0,0 diameter=0.01 hook_end=45", "a hook is 90, 135, 180 or none"),
+        ("fibres lo=0,0,0 hi=1,1,1 length=0.1 diameter=0.01 count=5 fraction=0.01 seed=1",
+         "give count= or fraction=, not both"),
+        ("fibres lo=0,0,0 hi=1,1,1 length=0.1 diameter=0.01 seed=1", "fibres need count= or fraction="),
+        ("bar from=0,0,0 to=1,0,0 diameter=0.01 spacing=0.005 smoothness=0.1",
+         "give spacing= or smoothness=, not both"),
+        ("bar from=0,0,0 to=1,0,0 diameter=0.01 &", "the item ends with & but no line follows"),
+        ("defaults diameter=0.01 name=top", "name= is for one item, not for defaults"),
+        ("box lo=0,0,0 hi=1,1,1\nbox lo=0,0,0 hi=2,2,2", "a second box item (the first is line 3)"),
+        ("output decimals=3\nbar from=0,0,0 to=1,0,0 diameter=0.01\noutput ntry=10", "a second output item"),
+        # the items
+        ("box lo=0,0,0 hi=1,0,1", "the box must have hi > lo in every direction"),
+        ("fibres lo=0,0,0 hi=1,1,-1 length=0.1 diameter=0.01 count=5 seed=1",
+         "the box must have hi > lo in every direction"),
+        ("output decimals=18", "decimals must be 0 to 17"),
+        ("output ntry=0", "ntry must be >= 1"),
+        (GOOD + "bar from=0,1,0 to=1,1,0 diameter=0.01 name=top\nbar from=0,2,0 to=1,2,0 diameter=0.01 name=top",
+         "the name top is taken by an earlier item"),
+        ("bar from=0,0,0 to=1,0,0 diameter=0.01 name=bar_l4\n" + GOOD.strip(),
+         "the name bar_l4 is taken by an earlier item"),
+        ("bar from=0,0,0 to=1,0,0 diameter=-0.01", "diameter must be > 0"),
+        ("cage axis=x from=0 to=1 centre=0,0 width=0.3 height=0.3 cover=0.02 every=0.5 diameter=0.01 "
+         "stirrup_diameter=0", "stirrup_diameter must be > 0"),
+        ("mesh corner=0,0,0 a=1,0,0 b=0,1,0 every_a=0.5 every_b=0.5 diameter=0.01 diameter_b=-0.01",
+         "diameter_b must be > 0"),
+        ("bar from=0,0,0 to=1,0,0 diameter=0.01 type=0", "type must be >= 1"),
+        ("bar from=0,0,0 to=1,0,0 diameter=0.01 density=0", "density must be > 0"),
+        ("bar from=0,0,0 to=1,0,0 diameter=0.01 spacing=0.02", "spacing must be > 0 and < the diameter"),
+        ("bar from=0,0,0 to=1,0,0 diameter=0.01 smoothness=1.5", "smoothness must be > 0 and < 1"),
+        ("polyline points=0,0,0;1,0,0;1,1,0 diameter=0.01 bend=0.002",
+         "bend: the mandrel radius 0.002 is tighter than the bar"),
+        ("cage axis=x from=0 to=1 centre=0,0 width=0.3 height=0.3 cover=0.02 every=0.5 diameter=0.01 "
+         "stirrup_diameter=0.006 stirrup_bend=0.001", "stirrup_bend: the mandrel radius 0.001 is tighter than the bar"),
+        ("bar from=0,0,0 to=1,0,0 diameter=0.01 hook_end=90 hook_length=-0.1", "hook_length must be >= 0"),
+        ("bar from=0,0,0 to=0,0,1 diameter=0.01 hook_end=90", "is zero or parallel to the bar's end"),
+        ("bar from=0,0,0 to=1,0,0 diameter=0.01 hook_start=180 hook_towards=0,0,0",
+         "is zero or parallel to the bar's end"),
+        ("bar from=0,0,0 to=0,0,0 diameter=0.01", "zero-length bar"),
+        ("polyline points=0,0,0;0,0,0;1,0,0 diameter=0.01", "zero-length segment"),
         ("polyline points=0,0,0;1,0,0;0,0,0 diameter=0.01", "turns back on itself"),
-        ("polyline points=0,0,0;0.05,0,0;0.05,0.05,0 diameter=0.01 bend=0.1", "do not fit"),
-        ("fibres lo=0,0,0 hi=0.1,0.1,0.1 length=0.05 diameter=0.01 count=5000 seed=1 apart=yes tries=20",
-         "found no place apart"),
+        ("polyline points=0,0,0;0.05,0,0;0.05,0.05,0 diameter=0.01 bend=0.1", "do not fit in the segment"),
+        ("stirrups axis=x from=0 to=1 every=0 centre=0,0 width=0.1 height=0.1 diameter=0.01", "every must be > 0"),
+        ("mesh corner=0,0,0 a=1,0,0 b=0,1,0 every_a=-0.5 every_b=0.5 diameter=0.01", "every_a must be > 0"),
+        ("stirrups axis=x from=1 to=0 every=0.5 centre=0,0 width=0.1 height=0.1 diameter=0.01",
+         "to (0) must not be below from (1)"),
+        ("cage axis=x from=0 to=1 centre=0,0 width=0.3 height=0.3 cover=0.02 every=0.1 diameter=0.01 "
+         "stirrup_diameter=0.006 stirrups_from=0.3 stirrups_to=0.1",
+         "stirrups_to (0.1) must not be below stirrups_from (0.3)"),
+        ("stirrups axis=x from=0 to=1 every=0.5 centre=0,0 width=0.03 height=0.1 diameter=0.01",
+         "is too small for its bends"),
+        ("cage axis=x from=1 to=1 centre=0,0 width=0.3 height=0.3 cover=0.02 every=0.5 diameter=0.01 "
+         "stirrup_diameter=0.006", "zero-length cage"),
         ("cage axis=x from=0 to=1 centre=0,0 width=0.1 height=0.1 cover=0.06 every=0.1 diameter=0.01 "
          "stirrup_diameter=0.006", "leaves no room"),
-        ("mesh corner=0,0,0 a=1,0,0 b=2,0,0 every_a=0.1 every_b=0.1 diameter=0.01", "parallel"),
-        ("bar from=0,0,0 to=1,0,0 diameter=0.01 smoothness=1e-300", "would need more than"),
+        ("cage axis=x from=0 to=1 centre=0,0 width=0.3 height=0.3 cover=0.02 every=0.5 diameter=0.01 "
+         "stirrup_diameter=0.006 bars_top=1", "bars_bottom and bars_top must be >= 2"),
+        ("cage axis=x from=0 to=1 centre=0,0 width=0.3 height=0.3 cover=0.02 every=0.5 diameter=0.01 "
+         "stirrup_diameter=0.006 bars_bottom=30", "do not fit side by side"),
+        ("cage axis=x from=0 to=1 centre=0,0 width=0.3 height=0.3 cover=0.02 every=0.5 diameter=0.01 "
+         "stirrup_diameter=0.006 bars_bottom=1e9", "do not fit side by side"),    # refused before it is laid out
+        ("mesh corner=0,0,0 a=0,0,0 b=0,1,0 every_a=0.5 every_b=0.5 diameter=0.01", "zero-length mesh side"),
+        ("mesh corner=0,0,0 a=1,0,0 b=2,0,0 every_a=0.1 every_b=0.1 diameter=0.01", "a and b are parallel"),
+        ("fibres lo=0,0,0 hi=1,1,1 length=0.01 diameter=0.01 count=5 seed=1", "must be longer than the diameter"),
+        ("fibres lo=0,0,0 hi=1,1,1 length=0.1 diameter=0.01 count=5 seed=1 normal=y",
+         "normal= is for orientation=plane"),
+        ("fibres lo=0,0,0 hi=0.02,0.1,0.1 length=0.03 diameter=0.001 count=5 seed=1",
+         "is longer than its box's smallest edge"),
+        ("fibres lo=0,0,0 hi=1,1,0.02 length=0.03 diameter=0.001 count=5 seed=1 orientation=plane normal=x",
+         "is longer than its box's smallest edge"),
+        ("fibres lo=0,0,0 hi=1,1,1 length=0.1 diameter=0.01 count=0 seed=1", "count must be >= 1"),
+        ("fibres lo=0,0,0 hi=1,1,1 length=0.1 diameter=0.01 fraction=1 seed=1", "fraction must be > 0 and < 1"),
+        ("fibres lo=0,0,0 hi=1,1,1 length=0.1 diameter=0.01 fraction=1e-9 seed=1", "is less than one fibre"),
+        ("fibres lo=0,0,0 hi=1,1,1 length=0.1 diameter=0.01 count=5 seed=1 tries=0", "tries must be >= 1"),
+        ("fibres lo=0,0,0 hi=1,1,1 length=0.1 diameter=0.01 count=5 seed=-1", "seed must be >= 0"),
+        ("fibres lo=0,0,0 hi=0.1,0.1,0.1 length=0.05 diameter=0.01 count=5000 seed=1 apart=yes tries=20",
+         "found no place apart"),
+        ("bar from=0,0,0 to=1,0,0 diameter=0.01 smoothness=1e-300", "would need more than 10000000 spheres"),
+        ("stirrups axis=x from=0 to=1000 every=0.001 centre=0,0 width=0.1 height=0.1 diameter=0.01",
+         "spheres in one item"),
+        ("fibres lo=0,0,0 hi=1,1,1 length=0.1 diameter=0.01 count=20000000 seed=1", "spheres in one item"),
         ("stirrups axis=x from=0 to=1 every=1e-300 centre=0,0 width=0.1 height=0.1 diameter=0.01",
-         "repeats more than"),
-        ("polyline points=0,0,0;0,0,0;1,0,0 diameter=0.01", "zero-length segment"),
-        ("bar from=0,0,0 to=0,0,1 diameter=0.01 hook_end=90", "parallel to the bar's end"),
+         "repeats more than 10000000 times"),
+        ("bar from=0,0,0 to=1,0,0 diameter=1e308", "the numbers overflow double precision"),
+        ("stirrups axis=x from=0 to=1 every=1 centre=0,0 width=1e308 height=1e308 diameter=0.01",
+         "the numbers overflow double precision"),
+        ("fibres lo=-1e308,-1e308,-1e308 hi=1e308,1e308,1e308 length=0.1 diameter=0.01 fraction=0.5 seed=1",
+         "the numbers overflow double precision"),
     ]
+    NOTHING = ["", "# only a comment\n", "box lo=0,0,0 hi=1,1,1\noutput decimals=3\ndefaults diameter=0.01\n"]
 
     def test_each(self):
-        for text, message in self.CASES:
+        for text, gist in self.CASES:
             with self.subTest(text=text):
-                status, out, err, _ = run("# a comment line\n\n" + text + "   # trailing comment\n", "data")
-                self.assertEqual(status, 1)
-                self.assertEqual(out, "")
-                lines = err.strip().splitlines()
-                self.assertEqual(len(lines), 1, err)
-                self.assertRegex(lines[0], r"^reinforce_layout: ERROR: \S*description.txt line 3: ")
-                self.assertIn(message, lines[0])
+                status, out, err, folder = run("# a comment line\n\n" + text + "   # trailing comment\n", *ALL_OUTPUTS)
+                line = refused(self, status, out, err, gist)
+                where = r"^reinforce_layout: ERROR: \S*description.txt line %d: " % (3 + text.count("\n"))
+                self.assertRegex(line, where)
+                self.assertEqual(os.listdir(folder), ["description.txt"])
+
+    def test_nothing_laid_out(self):
+        for text in self.NOTHING:
+            with self.subTest(text=text):
+                status, out, err, folder = run(text, *ALL_OUTPUTS)
+                refused(self, status, out, err, "description.txt lays out nothing")
+                self.assertEqual(os.listdir(folder), ["description.txt"])
+
+    def test_every_documented_check_tested(self):
+        """Each example of the Errors tables is in a case's gist, and each
+        case's gist holds one of them."""
+        tested = set(g for _, g in self.CASES) | {"description.txt lays out nothing", BadOutputs.STDOUT}
+        tested |= set(g for _, g, _ in BadArguments.CASES) | set(g for _, g, _ in BadOutputs.CASES)
+        docs = documented()
+        self.assertGreater(len(docs), 50)
+        self.assertEqual(sorted(d for d in docs if not any(d in t for t in tested)), [], "documented, not tested")
+        self.assertEqual(sorted(t for t in tested if not any(d in t for d in docs)), [], "tested, not documented")
 
     def test_continued_item_names_its_first_line(self):
         status, _, err, _ = run("# two items\nbar from=0,0,0 &\n  # a comment inside\n  to=1,0,0 diameter=0.01\n"
@@ -388,6 +520,157 @@ class BadDescriptions(unittest.TestCase):
         status, _, err, _ = run("bar from=0,0,0 to=1,0,0 diameter=0.01\nbar from=0,0,0 to=1,0,0 diameter=0\n")
         self.assertEqual(status, 1)
         self.assertIn("line 2: diameter must be > 0", err)
+
+    def test_numbers_in_every_notation_taken(self):    # the check that refuses 1_0 and 0x10 takes these
+        status, _, err, folder = run("bar from=-0,+.5,0. to=1e0,5E-1,0 diameter=1.e-2 type=2 density=7.8e3\n", "data")
+        self.assertEqual(status, 0, err)
+        rows = atoms(os.path.join(folder, "rebar.data"))
+        self.assertEqual(rows[0], (2, 0.01, 0.0, 0.5, 0.0))
+        self.assertEqual(rows[-1][2:], (1.0, 0.5, 0.0))
+
+    def test_byte_order_mark_and_latin1_comment(self):
+        folder = tempfile.mkdtemp(prefix="layout_test.")
+        with open(os.path.join(folder, "d.layout"), "wb") as f:
+            f.write(b"\xef\xbb\xbf# B\xfcgel\n" + GOOD.encode())
+        status, out, err = command(["d.layout"], folder)
+        self.assertEqual(status, 0, err)
+        self.assertIn("line 2 bar: 1 bar", out)
+
+
+class BadArguments(unittest.TestCase):
+    """A bad command line: status 1 (not argparse's 2), one ERROR line
+    naming it, nothing on stdout, and nothing written or changed."""
+    # (arguments, gist as documented, what else the line names)
+    CASES = [
+        ([], "the following arguments are required: description", "usage: reinforce_layout DESCRIPTION"),
+        (["description.txt", "--colour", "red", "--data", "rebar.data"], "unrecognized arguments:", "--colour red"),
+        (["description.txt", "other.txt", "--data", "rebar.data"], "unrecognized arguments:", "other.txt"),
+        (["description.txt", "--data"], "expected one argument", "--data"),
+        (["missing.txt", "--data", "rebar.data"], "cannot read", "missing.txt: No such file or directory"),
+        (["adir", "--data", "rebar.data"], "cannot read", "adir: Is a directory"),
+        (["description.txt", "--data", "description.txt"], "are the same path", "the description and --data"),
+        (["description.txt", "--data", "out", "--liggghts", "./out"], "are the same path", "--data and --liggghts"),
+        (["description.txt", "--molecules", "mol", "--liggghts", "adir/../mol"], "are the same path",
+         "--molecules and --liggghts"),
+    ]
+
+    def test_each(self):
+        for args, gist, detail in self.CASES:
+            with self.subTest(args=args):
+                folder = tempfile.mkdtemp(prefix="layout_test.")
+                with open(os.path.join(folder, "description.txt"), "w") as f:
+                    f.write(GOOD)
+                os.mkdir(os.path.join(folder, "adir"))
+                before = snapshot(folder)
+                status, out, err = command(args, folder)
+                self.assertIn(detail, refused(self, status, out, err, gist))
+                self.assertEqual(snapshot(folder), before)
+
+    def test_help_is_no_error(self):
+        status, out, err = command(["--help"], tempfile.gettempdir())
+        self.assertEqual((status, err), (0, ""))
+        self.assertIn("usage: reinforce_layout", out)
+
+
+class BadOutputs(unittest.TestCase):
+    """An output that cannot be written: status 1, one ERROR line naming
+    it, nothing on stdout, and no output written, none half written, none
+    changed (an existing file keeps its bytes, a --molecules folder made
+    for the run is gone again)."""
+    # Arguments after the description, run in a folder holding afile, an
+    # empty folder adir, old.data, and mol/ with keep.txt and a folder
+    # where bar_l1.mol would go; the outputs before the failing one are
+    # written first (data, molecules, liggghts, in that order).
+    CASES = [
+        (["--data", "missing/dir/x.data", "--liggghts", "t.liggghts"], "cannot write",
+         "missing/dir/x.data: No such file or directory"),
+        (["--data", "adir", "--molecules", "newmol"], "cannot write", "adir: Is a directory"),
+        (["--data", "new.data", "--liggghts", "adir"], "cannot write", "adir: Is a directory"),
+        (["--data", "afile/x.data"], "cannot write", "afile/x.data: Not a directory"),
+        (["--data", "newdir/", "--molecules", "newmol"], "cannot write", "newdir/: Is a directory"),
+        (["--liggghts", "", "--data", "new.data"], "cannot write", "write : No such file or directory"),
+        (["--data", "new.data", "--liggghts", "missing/t.liggghts"], "cannot write",
+         "missing/t.liggghts: No such file or directory"),
+        (["--molecules", "afile", "--data", "new.data"], "cannot write", "afile: Not a directory"),
+        (["--molecules", "afile/sub/mol"], "cannot write", "afile: Not a directory"),
+        (["--data", "new.data", "--molecules", "mol"], "cannot write", "mol/bar_l1.mol: Is a directory"),
+        (["--data", "new.data", "--molecules", "new/deeper/mol", "--liggghts", "adir"], "cannot write",
+         "adir: Is a directory"),
+        (["--data", "old.data", "--molecules", "newmol", "--liggghts", "missing/t.liggghts"], "cannot write",
+         "missing/t.liggghts"),
+    ]
+    STDOUT = "cannot write standard output"
+
+    def setUp(self):    # also for each case: one that wrote would spoil the next
+        self.folder = tempfile.mkdtemp(prefix="layout_test.")
+        for name, text in (("description.txt", GOOD), ("afile", "a file\n"), ("old.data", "old data\n"),
+                           ("mol/keep.txt", "kept\n")):
+            os.makedirs(os.path.dirname(os.path.join(self.folder, name)), exist_ok=True)
+            with open(os.path.join(self.folder, name), "w") as f:
+                f.write(text)
+        os.mkdir(os.path.join(self.folder, "adir"))
+        os.mkdir(os.path.join(self.folder, "mol", "bar_l1.mol"))
+        self.before = snapshot(self.folder)
+
+    def test_each(self):
+        for args, gist, detail in self.CASES:
+            with self.subTest(args=args):
+                self.setUp()
+                status, out, err = command(["description.txt"] + args, self.folder)
+                self.assertIn(detail, refused(self, status, out, err, gist))
+                self.assertEqual(snapshot(self.folder), self.before)
+
+    def test_absolute_missing_folder(self):
+        target = os.path.join(self.folder, "nonexistent", "dir", "x.data")
+        status, out, err = command(["description.txt", "--data", target, "--molecules", "newmol"], self.folder)
+        self.assertIn(target + ": No such file or directory", refused(self, status, out, err, "cannot write"))
+        self.assertEqual(snapshot(self.folder), self.before)
+
+    def test_write_error(self):
+        """A pipe whose reader goes away: the write itself fails."""
+        pipe = os.path.join(self.folder, "pipe")
+        os.mkfifo(pipe)
+        reader = threading.Thread(target=lambda: open(pipe, "rb").close(), daemon=True)
+        reader.start()
+        # 30,000 spheres: more than a pipe holds, so a write meets the closed end
+        text = "bar from=0,0,0 to=100,0,0 diameter=0.01 spacing=0.0033\n"
+        with open(os.path.join(self.folder, "description.txt"), "w") as f:
+            f.write(text)
+        before = snapshot(self.folder)
+        status, out, err = command(["description.txt", "--data", "new.data", "--molecules", "newmol",
+                                    "--liggghts", "pipe"], self.folder)
+        self.assertIn("pipe: Broken pipe", refused(self, status, out, err, "cannot write"))
+        self.assertEqual(snapshot(self.folder), before)
+        self.assertTrue(stat.S_ISFIFO(os.stat(pipe).st_mode))
+
+    def test_stopped_leaves_nothing(self):
+        """Stopped while it waits to write a pipe nobody reads (the data
+        file staged by then): no temporary file left, no traceback."""
+        for signum in (signal.SIGTERM, signal.SIGINT):
+            with self.subTest(signal=signum):
+                self.setUp()
+                os.mkfifo(os.path.join(self.folder, "pipe"))
+                before = snapshot(self.folder)
+                p = subprocess.Popen([COMMAND, "description.txt", "--data", "new.data", "--molecules", "newmol",
+                                      "--liggghts", "pipe"], cwd=self.folder, stdout=subprocess.PIPE,
+                                     stderr=subprocess.PIPE)
+                waited = 0.0
+                while not any(n.startswith(".new.data.") for n in os.listdir(self.folder)) and waited < TIMEOUT:
+                    time.sleep(0.05)
+                    waited += 0.05
+                p.send_signal(signum)
+                out, err = p.communicate(timeout=TIMEOUT)
+                self.assertEqual((p.returncode, out, err), (128 + signum, b"", b""))
+                self.assertEqual(snapshot(self.folder), before)
+
+    def test_standard_output_full(self):
+        if not os.path.exists("/dev/full"):
+            self.skipTest("no /dev/full")
+        with open("/dev/full", "w") as full:
+            status, _, err = command(["description.txt", "--data", "new.data", "--molecules", "newmol"], self.folder,
+                                     stdout=full)
+        self.assertIn("No space left on device", refused(self, status, "", err, self.STDOUT))
+        self.assertEqual(snapshot(self.folder), self.before)
 
 
 class Outputs(unittest.TestCase):
@@ -435,6 +718,53 @@ class Outputs(unittest.TestCase):
         for k, row in enumerate(rows):
             self.assertLess(dist([values[4 * k + j] + centre[j] for j in range(3)], row[2:]), 1e-15)
             self.assertEqual(values[4 * k + 3], 0.005)
+
+    def test_nothing_beside_the_outputs(self):    # the temporary files are gone, the old files replaced
+        folder = tempfile.mkdtemp(prefix="layout_test.")
+        with open(os.path.join(folder, "description.txt"), "w") as f:
+            f.write(GOOD)
+        os.mkdir(os.path.join(folder, "mol"))
+        for name in ("rebar.data", "mol/bar_l1.mol", "mol/other.mol"):
+            with open(os.path.join(folder, name), "w") as f:
+                f.write("old\n")
+        os.chmod(os.path.join(folder, "rebar.data"), 0o640)
+        status, out, err = command(["description.txt", "--data", "rebar.data", "--molecules", "mol",
+                                    "--liggghts", "t.liggghts"], folder)
+        self.assertEqual(status, 0, err)
+        self.assertEqual(sorted(snapshot(folder)), ["description.txt", "mol", "mol/bar_l1.mol", "mol/other.mol",
+                                                    "rebar.data", "t.liggghts"])
+        self.assertEqual(read(os.path.join(folder, "mol", "other.mol")), "old\n")
+        self.assertIn("Coords", read(os.path.join(folder, "mol", "bar_l1.mol")))
+        self.assertEqual(len(atoms(os.path.join(folder, "rebar.data"))), 322)
+        self.assertEqual(stat.S_IMODE(os.stat(os.path.join(folder, "rebar.data")).st_mode), 0o640)
+        self.assertIn("wrote rebar.data (322 atoms)", out)
+
+    def test_pipe_written_in_place(self):    # renamed over, a pipe (or /dev/null) would become a file
+        folder = tempfile.mkdtemp(prefix="layout_test.")
+        with open(os.path.join(folder, "description.txt"), "w") as f:
+            f.write(GOOD)
+        pipe = os.path.join(folder, "pipe")
+        os.mkfifo(pipe)
+        got = []
+        reader = threading.Thread(target=lambda: got.append(read(pipe)), daemon=True)
+        reader.start()
+        status, _, err = command(["description.txt", "--data", "rebar.data", "--liggghts", "pipe"], folder)
+        reader.join(TIMEOUT)
+        self.assertEqual(status, 0, err)
+        self.assertTrue(stat.S_ISFIFO(os.stat(pipe).st_mode))
+        self.assertRegex(got[0] if got else "", r'variable bar_l1 string "nspheres 322 ')
+        self.assertEqual(sorted(os.listdir(folder)), ["description.txt", "pipe", "rebar.data"])
+
+    def test_reader_gone_files_written(self):    # `| head`: no error, the files still in place
+        folder = tempfile.mkdtemp(prefix="layout_test.")
+        with open(os.path.join(folder, "description.txt"), "w") as f:
+            f.write(GOOD)
+        p = subprocess.Popen([COMMAND, "description.txt", "--data", "rebar.data"], cwd=folder,
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+        p.stdout.close()
+        err = p.stderr.read()
+        self.assertEqual((p.wait(TIMEOUT), err), (0, b""))
+        self.assertEqual(len(atoms(os.path.join(folder, "rebar.data"))), 322)
 
 
 if __name__ == "__main__":
