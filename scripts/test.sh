@@ -188,9 +188,9 @@ fi
 
 san="$top/build-sanitize"
 san_args=(-DREINFORCE_LIGGGHTS=OFF) san_targets=(core_tests make_scene check_scene) san_hosts=()
-san_tests="^Kernel|^Engine|^Fix|^Schedule|^Summary|^Invocation|^CellGrid|^RoundRecords|^Totals|^Regrowth|^stability_periodic_2x2x1_np4$|^stability_stiff|^lammps_identical_keep_2x2x1_np4$|^lammps_scene_eight_thin_subdomains_search_0.02_np8$|^lammps_identical_regrow_2x2x1_np4$"
+san_tests="^Kernel|^Engine|^Fix|^Schedule|^Summary|^Invocation|^CellGrid|^RoundRecords|^Totals|^Regrowth|^ExactSum|^stability_periodic_2x2x1_np4$|^stability_stiff|^lammps_identical_keep_2x2x1_np4$|^lammps_scene_eight_thin_subdomains_search_0.02_np8$|^lammps_identical_regrow_2x2x1_np4$"
 if [ -n "$(skip_reason lammps)" ]; then
-  san_args+=(-DREINFORCE_LAMMPS=OFF) san_tests="^Kernel|^Engine|^Fix|^Schedule|^Summary|^Invocation|^CellGrid|^RoundRecords|^Totals|^Regrowth"
+  san_args+=(-DREINFORCE_LAMMPS=OFF) san_tests="^Kernel|^Engine|^Fix|^Schedule|^Summary|^Invocation|^CellGrid|^RoundRecords|^Totals|^Regrowth|^ExactSum"
   [ "$run_sanitizer" = 0 ] || skipped+=("sanitizer: LAMMPS scenes (lammps skipped)")
 else
   # ON explicitly: an OFF left in build-sanitize's cache must not drop the scenes
