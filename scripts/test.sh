@@ -83,6 +83,11 @@ run_ctest() {    # run_ctest BUILD_DIR [ctest args]; the part's name: $part (def
            sed -E 's/^[A-Za-z0-9]+\..*/unit/; s/^(check_scene|lammps|liggghts|stability|fuzz|src_lammps|src_liggghts|quality|layout|docs)_.*/\1/' |
            sort | uniq -c | awk '{printf "%s%s %d", (NR > 1 ? ", " : ""), $2, $1}')
   parts+=("$name: $total tests, $((total - fails)) passed, $fails failed${groups:+ ($groups)}")
+  # Where the part's time went: its 20 slowest tests.
+  echo "== the 20 slowest tests of part $name (seconds)"
+  sed -nE 's/^ *[0-9]+\/[0-9]+ Test +#[0-9]+: ([^ ]+) .* ([0-9.]+) sec$/\2 \1/p' "$out" |
+    sort -rn | head -20 | awk '{printf "  %8.2f  %s\n", $1, $2}'
+
   [ -n "$line" ] || parts+=("$name: FAILED: ctest reported no result (no test found?)")
   rm -f "$out"
 }
