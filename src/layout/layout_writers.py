@@ -9,6 +9,7 @@ asks. Outputs (below) puts every file in place only once all are written.
 import errno
 import math
 import os
+import signal
 import stat
 import tempfile
 
@@ -50,11 +51,14 @@ class Outputs:
         parent = os.path.dirname(path.rstrip(os.sep))
         if parent:
             self.folder(parent)
+        blocked = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
         try:
             os.mkdir(path)
+            self.made.append(path)
         except OSError as e:
             raise OutputError(path, reason(e))
-        self.made.append(path)
+        finally:
+            signal.pthread_sigmask(signal.SIG_SETMASK, blocked)
 
     def file(self, path, write):
         """write(out) into a temporary file beside path (or, for a device
@@ -74,11 +78,16 @@ class Outputs:
             return
         final = os.path.realpath(path)    # through a link, as open() would write
         folder, name = os.path.split(final)
+        # A signal between making the file and listing it would leave it
+        # behind: none is taken in between.
+        blocked = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
         try:
             fd, temp = tempfile.mkstemp(prefix="." + name + ".", suffix=".part", dir=folder)
+            self.staged.append((temp, final))
         except OSError as e:
             raise OutputError(path, reason(e))
-        self.staged.append((temp, final))
+        finally:
+            signal.pthread_sigmask(signal.SIG_SETMASK, blocked)
         try:
             os.fchmod(fd, stat.S_IMODE(mode) if mode is not None else self.mode)
             with open(fd, "w", encoding="utf-8", errors="surrogateescape") as out:

@@ -93,7 +93,7 @@ EOF
 # The real core, deliberately broken: the first source file does not compile.
 real=$w/real
 mkdir -p "$real/src"
-cp -r "$top/CMakeLists.txt" "$top/scripts" "$top/bench" "$real/"
+cp -r "$top/CMakeLists.txt" "$top/cmake" "$top/scripts" "$top/bench" "$real/"
 cp -r "$top/src/core" "$top/src/layout" "$real/src/"
 first=$(sed -n 's|^ *\(src/core/[a-z_]*\.cpp\)$|\1|p; s|^add_library(reinforce_core STATIC *\(src/core/[a-z_]*\.cpp\).*|\1|p' \
         "$real/CMakeLists.txt" | head -1)
