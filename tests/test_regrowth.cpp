@@ -159,8 +159,11 @@ public:
   void post_results(const std::vector<double> &, const std::vector<int> &) override {}
   std::vector<double> collect_results(const std::vector<int> &) override { return {}; }
   void finish_results() override {}
-  double wall_time() override { return 0; }
-  void log(const std::string &) override {}
+  // A clock that advances `tick` seconds a reading (0: stands still).
+  double tick = 0, clock = 0;
+  double wall_time() override { return clock += tick; }
+  std::vector<std::string> logged;
+  void log(const std::string &line) override { logged.push_back(line); }
   void warn(const std::string &) override {}
   void fail(const std::string &message) override { throw std::runtime_error(message); }
 
@@ -576,6 +579,31 @@ TEST(Regrowth, SeedsThatCannotFitAreDeletedTogether)
   EXPECT_GE(s.deleted, 100);
   EXPECT_LE(s.sweeps, 6000);
   EXPECT_LE(worst_overlap(h), kExact);
+}
+
+// A regrowth that runs longer than 5 s says how far it got, at most every
+// 5 s, on the log: the stage, the steps, the time so far; a quick one
+// says nothing of the kind.
+TEST(Regrowth, LongGrowthLogsItsProgress)
+{
+  for (const double tick : {0.0, 1.0}) {
+    RegrowthHost h(0.5);
+    h.tick = tick;
+    bar_in_lattice(h, 0.1, 3);
+    regrow_scene(h, 0.3);
+    std::size_t progress = 0;
+    for (const std::string &line : h.logged)
+      if (line.find("fix reinforce/invert: regrowth: stage ") == 0) {
+        ++progress;
+        EXPECT_NE(line.find(" of 10 (radii "), std::string::npos) << line;
+        EXPECT_NE(line.find(" FIRE steps, "), std::string::npos) << line;
+        EXPECT_NE(line.find(" s\n"), std::string::npos) << line;
+      }
+    if (tick == 0)
+      EXPECT_EQ(progress, 0u);
+    else
+      EXPECT_GE(progress, 2u);
+  }
 }
 
 // Exact sums: the same whatever the order or grouping of the terms, and
