@@ -1403,3 +1403,61 @@ TEST(BoundariesIndex, SliverCylinderLooksAtFewTriangles)
   EXPECT_LE(jump_sum, 32 * jumps) << "mean over jumps";
   EXPECT_LE(jump_max, tris.size() / 2) << "most in a jump";
 }
+
+// The index itself (reinforce_triangle_index.h): a query yields every
+// triangle within `reach` of the move's end or met by its path, each once;
+// small and medium triangles, tilted ones across many cells, degenerate
+// ones, and a floor far larger than the cells (yielded by every query: the
+// only ones, with the one marked so).
+TEST(TriangleIndex, YieldsEveryTriangleNearTheMoveOnce)
+{
+  Random rng(47);
+  std::vector<Triangle> tris = ball_mesh({0.2, -0.1, 0.1}, 0.4, 2, rng);
+  for (int i = 0; i < 30; ++i) {    // tilted, 0.5 to 2 across: tens of cells each
+    const Vec3 a = rng.in_box(1);
+    const double size = rng.uniform(0.5, 2);
+    tris.push_back({a, a + size * rng.direction(), a + size * rng.direction()});
+  }
+  // Any and very obtuse ones (not slivers nor needles: the reference below
+  // is their computed distance, which Boundaries trusts only for triangles
+  // it does not mark thin).
+  for (int i = 0; i < 20; ++i) tris.push_back(random_triangle(rng, i % 2 ? 3 : 0));
+  tris.push_back({{0.1, 0.1, 0.1}, {0.1, 0.1, 0.1}, {0.4, -0.2, 0.3}});      // a segment
+  tris.push_back({{-0.3, 0.2, 0.5}, {-0.3, 0.2, 0.5}, {-0.3, 0.2, 0.5}});    // a point
+  for (const Triangle &t : square(500, -1.2)) tris.push_back(t);
+  std::vector<bool> every(tris.size(), false);
+  every[3] = true;    // marked: yielded by every query
+  TriangleIndex index;
+  index.build(tris, every, 0.05);
+  EXPECT_GE(index.cell_size(), 0.05);
+  // The floor (its two triangles far larger than the cells) and the one
+  // marked: nothing else is yielded everywhere.
+  EXPECT_EQ(index.always_yielded(), 3u);
+  std::vector<int> times(tris.size());
+  std::size_t yielded = 0, queries = 0;
+  for (int q = 0; q < 4000; ++q) {
+    const double reach = std::pow(10.0, rng.uniform(-3, -0.5));
+    const Vec3 to = rng.in_box(1.3);
+    const Vec3 from = q % 3 ? to + rng.uniform(0, 3) * reach * rng.direction() : rng.in_box(1.3);
+    std::fill(times.begin(), times.end(), 0);
+    index.for_each_near_move(from, to, reach, [&](int i) { ++times[i]; });
+    for (std::size_t i = 0; i < tris.size(); ++i) {
+      ASSERT_LE(times[i], 1) << "triangle " << i << " yielded twice, query " << q;
+      const bool near =
+          distance_to_triangle(to, tris[i]) <= reach || segment_meets_triangle(from, to, tris[i]);
+      if (near) {
+        EXPECT_EQ(times[i], 1) << "triangle " << i << " missed, query " << q;
+      }
+      yielded += times[i];
+    }
+    ++queries;
+  }
+  // Not every triangle, most of the time.
+  EXPECT_LT(yielded, queries * tris.size() / 4);
+  // Anything not finite: every triangle, each once.
+  for (const Vec3 &bad : {Vec3{NAN, 0, 0}, Vec3{0, INFINITY, 0}}) {
+    std::fill(times.begin(), times.end(), 0);
+    index.for_each_near_move(bad, {0, 0, 0}, 0.1, [&](int i) { ++times[i]; });
+    EXPECT_EQ(std::count(times.begin(), times.end(), 1), static_cast<long>(tris.size()));
+  }
+}
