@@ -1166,3 +1166,298 @@ TEST(BoundariesDistance, NonFinitePoint)
     }
   }
 }
+
+// ===========================================================================
+// The triangle index (Boundaries::admits looks only at the triangles near
+// the move): the same answer as every triangle tested, on meshes that
+// defeat an index of bounding spheres, and few triangles looked at.
+
+namespace {
+
+// admits() with every triangle tested: the same predicate, no index.
+bool admits_every_triangle(const std::vector<Triangle> &tris, const Move &m)
+{
+  const double clear = m.r * (1 - m.tol);
+  for (const Triangle &t : tris)
+    if (!(distance_to_triangle(m.c, t) >= clear) || segment_meets_triangle(m.from, m.c, t))
+      return false;
+  return true;
+}
+
+// A closed cylinder mould about the z axis through `base`, as an STL mesher
+// makes it: each of `segments` side rectangles two slivers spanning the
+// whole height, each cap a fan of thin triangles from its centre.
+std::vector<Triangle> cylinder_mould(Vec3 base, double radius, double height, int segments)
+{
+  std::vector<Triangle> tris;
+  const double pi = std::acos(-1.0);
+  const Vec3 up{0, 0, height};
+  for (int i = 0; i < segments; ++i) {
+    const double a0 = 2 * pi * i / segments, a1 = 2 * pi * (i + 1) / segments;
+    const Vec3 p0 = base + radius * Vec3{std::cos(a0), std::sin(a0), 0};
+    const Vec3 p1 = base + radius * Vec3{std::cos(a1), std::sin(a1), 0};
+    tris.push_back({p0, p1, p1 + up});
+    tris.push_back({p0, p1 + up, p0 + up});
+    tris.push_back({base, p1, p0});
+    tris.push_back({base + up, p0 + up, p1 + up});
+  }
+  return tris;
+}
+
+// Moves about the mould of cylinder_mould(base, radius, height): spheres of
+// radius 0.04 to 0.16 of the mould's radius by small steps (the
+// relaxation's), by steps of a few radii, and long jumps across it (the
+// relocation's), near its side, its caps and its rims, inside and outside.
+std::vector<Move> mould_moves(Random &rng, Vec3 base, double radius, double height, int count)
+{
+  std::vector<Move> moves;
+  const double tols[] = {kTol, 1e-10, 0.1, 0};
+  const double pi = std::acos(-1.0);
+  for (int i = 0; i < count; ++i) {
+    Move m;
+    m.r = radius * rng.uniform(0.04, 0.16);
+    m.tol = tols[i % 4];
+    const double angle = rng.uniform(0, 2 * pi), z = rng.uniform(-2 * m.r, height + 2 * m.r);
+    const Vec3 across{std::cos(angle), std::sin(angle), 0};
+    switch (i % 5) {
+    case 0:    // about the side
+      m.c = base + (radius + rng.uniform(-2, 2) * m.r) * across + Vec3{0, 0, z};
+      break;
+    case 1:    // about a cap
+      m.c = base + (radius * std::sqrt(rng.uniform(0, 1.2))) * across +
+            Vec3{0, 0, (i % 2 ? height : 0) + rng.uniform(-2, 2) * m.r};
+      break;
+    case 2:    // about a rim
+      m.c = base + (radius + rng.uniform(-2, 2) * m.r) * across +
+            Vec3{0, 0, (i % 2 ? height : 0) + rng.uniform(-2, 2) * m.r};
+      break;
+    default:    // anywhere about the mould
+      m.c = base + (radius * rng.uniform(0, 1.3)) * across + Vec3{0, 0, z};
+    }
+    const int step = i % 3;
+    if (i % 5 == 4) {    // a jump from elsewhere in or about the mould
+      const double a = rng.uniform(0, 2 * pi);
+      m.from = base + (radius * rng.uniform(0, 1.3)) * Vec3{std::cos(a), std::sin(a), 0} +
+               Vec3{0, 0, rng.uniform(-0.2, 1.2) * height};
+    } else {
+      m.from = m.c + (step == 0 ? rng.uniform(0, 0.1) : rng.uniform(0, 3)) * m.r * rng.direction();
+    }
+    moves.push_back(m);
+  }
+  return moves;
+}
+
+// The indexed admits() against every triangle tested, move by move: equal
+// always (the same predicate on each triangle; rounding cannot differ), and
+// both answers common. distance() too.
+void expect_same_as_every_triangle(const std::string &name, const std::vector<Triangle> &tris,
+                                   const std::vector<Move> &moves)
+{
+  Boundaries b;
+  for (const Triangle &t : tris) ASSERT_TRUE(b.add(t)) << name;
+  int admitted = 0, refused = 0, wrong = 0;
+  for (std::size_t i = 0; i < moves.size(); ++i) {
+    const Move &m = moves[i];
+    const bool expected = admits_every_triangle(tris, m);
+    (expected ? admitted : refused)++;
+    const bool got = b.admits(m.from, m.c, m.r, m.tol);
+    if (got != expected && ++wrong <= 10)
+      ADD_FAILURE() << name << ": move " << i << " " << describe(m) << ": admits " << got
+                    << ", every triangle " << expected;
+  }
+  EXPECT_EQ(wrong, 0) << name;
+  EXPECT_GT(admitted, static_cast<int>(moves.size() / 10)) << name;
+  EXPECT_GT(refused, static_cast<int>(moves.size() / 10)) << name;
+  for (std::size_t i = 0; i < moves.size(); i += 7) {
+    double best = INFINITY;
+    for (const Triangle &t : tris) best = std::min(best, distance_to_triangle(moves[i].c, t));
+    EXPECT_EQ(b.distance(moves[i].c), best) << name << " " << describe(moves[i].c);
+  }
+}
+
+}    // namespace
+
+// (a) A cylinder mould of long slivers (64 segments, each side triangle
+// spanning the whole height), about the origin and far from it (cells of
+// large coordinates), and of 7 segments (a coarse mesh).
+TEST(BoundariesIndex, SliverCylinderSameAsEveryTriangle)
+{
+  Random rng(31);
+  for (const Vec3 &base : {Vec3{0, 0, 0}, Vec3{1e4, -3e3, 7e2}}) {
+    for (int segments : {64, 7}) {
+      const std::vector<Triangle> tris = cylinder_mould(base, 0.05, 0.1, segments);
+      expect_same_as_every_triangle("mould of " + std::to_string(segments) + " segments at " +
+                                        describe(base),
+                                    tris, mould_moves(rng, base, 0.05, 0.1, 6000));
+    }
+  }
+}
+
+// (b) Many small triangles (a bumpy ball) with a few huge ones: a floor of
+// two triangles 2000 wide, and a huge tilted triangle across the scene (its
+// bounding box is a cube: an index by boxes would put it everywhere).
+TEST(BoundariesIndex, HugeTrianglesAmongSmallSameAsEveryTriangle)
+{
+  Random rng(37);
+  std::vector<Triangle> tris = ball_mesh({-0.4, 0.3, 0.2}, 0.35, 3, rng);
+  for (const Triangle &t : square(1000, -0.5)) tris.push_back(t);
+  tris.push_back({{-50, -50, -50}, {60, -40, 70}, {-30, 80, 40}});
+  tris.push_back({{-3, 2, -1}, {4, -1, 3}, {1, 5, 2}});    // large, among the small ones
+  std::vector<Move> moves = random_moves(rng, 6000);
+  // Near the tilted triangle, far from the ball.
+  const Triangle &tilted = tris[tris.size() - 2];
+  const Vec3 n = cross(tilted.b - tilted.a, tilted.c - tilted.a);
+  for (int i = 0; i < 2000; ++i) {
+    Move m;
+    m.r = std::pow(10.0, rng.uniform(-2.5, -0.5));
+    m.tol = i % 2 ? kTol : 0.1;
+    double u = rng.uniform(0, 1), v = rng.uniform(0, 1);
+    if (u + v > 1) u = 1 - u, v = 1 - v;
+    m.c = tilted.a + u * (tilted.b - tilted.a) + v * (tilted.c - tilted.a) +
+          (rng.uniform(-2, 2) * m.r / norm(n)) * n;
+    m.from = m.c + rng.uniform(0, 3) * m.r * rng.direction();
+    moves.push_back(m);
+  }
+  expect_same_as_every_triangle("huge among small", tris, moves);
+}
+
+// (c) Degenerate triangles: segments (two equal vertices, or three
+// collinear, exactly and to rounding), points, and triangles far thinner
+// than rounding, among a few ordinary ones.
+TEST(BoundariesIndex, DegenerateTrianglesSameAsEveryTriangle)
+{
+  Random rng(41);
+  std::vector<Triangle> tris;
+  for (int i = 0; i < 60; ++i) {
+    const Vec3 a = rng.in_box(1), d = rng.uniform(0.01, 0.5) * rng.direction();
+    switch (i % 6) {
+    case 0:
+      tris.push_back({a, a, a + d});    // a segment
+      break;
+    case 1:    // three collinear, exactly (coordinates in 1/8)
+    {
+      const Vec3 p{std::round(8 * a.x) / 8, std::round(8 * a.y) / 8, std::round(8 * a.z) / 8};
+      tris.push_back({p, p + Vec3{0.25, 0.125, 0}, p + Vec3{0.5, 0.25, 0}});
+      break;
+    }
+    case 2:
+      tris.push_back({a, a + d, a + 0.3 * d});    // collinear up to rounding
+      break;
+    case 3:
+      tris.push_back({a, a, a});    // a point
+      break;
+    case 4:    // a sliver of height 1e-20 of its length
+      tris.push_back({a, a + d, a + 0.5 * d + 1e-20 * norm(d) * rng.direction()});
+      break;
+    default:
+      tris.push_back({a, a + rng.uniform(0.05, 0.3) * rng.direction(),
+                      a + rng.uniform(0.05, 0.3) * rng.direction()});
+    }
+  }
+  std::vector<Move> moves;
+  for (int i = 0; i < 6000; ++i) {
+    const Triangle &t = tris[i % tris.size()];
+    Move m;
+    m.r = std::pow(10.0, rng.uniform(-2.5, -0.7));
+    m.tol = i % 3 ? kTol : 0.1;
+    const double s = rng.uniform(0, 1);
+    m.c = t.a + s * (t.b - t.a) + rng.uniform(0, 1 - s) * (t.c - t.a) +
+          rng.uniform(0, 2) * m.r * rng.direction();
+    m.from = i % 4 ? m.c + rng.uniform(0, 3) * m.r * rng.direction() : rng.in_box(1.2);
+    moves.push_back(m);
+  }
+  expect_same_as_every_triangle("degenerate", tris, moves);
+}
+
+// The mould of 64 segments (256 triangles; each side triangle is as long
+// as the mould is high, so its bounding sphere reaches half of them): a
+// sphere's small step looks at the few triangles next to it, a jump across
+// the mould at those along its path, never at all of them.
+TEST(BoundariesIndex, SliverCylinderLooksAtFewTriangles)
+{
+  Random rng(43);
+  const Vec3 base{0.06, 0.06, 0};
+  const std::vector<Triangle> tris = cylinder_mould(base, 0.05, 0.1, 64);
+  Boundaries b;
+  for (const Triangle &t : tris) ASSERT_TRUE(b.add(t));
+  std::size_t step_sum = 0, step_max = 0, jump_sum = 0, jump_max = 0, steps = 0, jumps = 0;
+  for (const Move &m : mould_moves(rng, base, 0.05, 0.1, 5000)) {
+    // Spheres of 4 to 8 mm, as in the LIGGGHTS mould scene.
+    const double r = std::min(std::max(m.r, 0.004), 0.008);
+    const std::size_t n = b.triangles_tested(m.from, m.c, r);
+    if (norm(m.c - m.from) <= 3 * r) {
+      step_sum += n, step_max = std::max(step_max, n), ++steps;
+    } else {
+      jump_sum += n, jump_max = std::max(jump_max, n), ++jumps;
+    }
+  }
+  ASSERT_GT(steps, 1000u);
+  ASSERT_GT(jumps, 500u);
+  std::printf("triangles looked at: small steps mean %.1f most %zu, jumps mean %.1f most %zu\n",
+              double(step_sum) / steps, step_max, double(jump_sum) / jumps, jump_max);
+  // Every triangle would be 256; a small step looks at about 9, a jump at
+  // about 13 (the index of this file's version), bounds twice that.
+  EXPECT_LE(step_sum, 16 * steps) << "mean over small steps";
+  // At a cap's centre all 64 triangles of its fan meet.
+  EXPECT_LE(step_max, 80u) << "most in a small step";
+  EXPECT_LE(jump_sum, 32 * jumps) << "mean over jumps";
+  EXPECT_LE(jump_max, tris.size() / 2) << "most in a jump";
+}
+
+// The index itself (reinforce_triangle_index.h): a query yields every
+// triangle within `reach` of the move's end or met by its path, each once;
+// small and medium triangles, tilted ones across many cells, degenerate
+// ones, and a floor far larger than the cells (yielded by every query: the
+// only ones, with the one marked so).
+TEST(TriangleIndex, YieldsEveryTriangleNearTheMoveOnce)
+{
+  Random rng(47);
+  std::vector<Triangle> tris = ball_mesh({0.2, -0.1, 0.1}, 0.4, 2, rng);
+  for (int i = 0; i < 30; ++i) {    // tilted, 0.5 to 2 across: tens of cells each
+    const Vec3 a = rng.in_box(1);
+    const double size = rng.uniform(0.5, 2);
+    tris.push_back({a, a + size * rng.direction(), a + size * rng.direction()});
+  }
+  // Any and very obtuse ones (not slivers nor needles: the reference below
+  // is their computed distance, which Boundaries trusts only for triangles
+  // it does not mark thin).
+  for (int i = 0; i < 20; ++i) tris.push_back(random_triangle(rng, i % 2 ? 3 : 0));
+  tris.push_back({{0.1, 0.1, 0.1}, {0.1, 0.1, 0.1}, {0.4, -0.2, 0.3}});      // a segment
+  tris.push_back({{-0.3, 0.2, 0.5}, {-0.3, 0.2, 0.5}, {-0.3, 0.2, 0.5}});    // a point
+  for (const Triangle &t : square(500, -1.2)) tris.push_back(t);
+  std::vector<bool> every(tris.size(), false);
+  every[3] = true;    // marked: yielded by every query
+  TriangleIndex index;
+  index.build(tris, every, 0.05);
+  EXPECT_GE(index.cell_size(), 0.05);
+  // The floor (its two triangles far larger than the cells) and the one
+  // marked: nothing else is yielded everywhere.
+  EXPECT_EQ(index.always_yielded(), 3u);
+  std::vector<int> times(tris.size());
+  std::size_t yielded = 0, queries = 0;
+  for (int q = 0; q < 4000; ++q) {
+    const double reach = std::pow(10.0, rng.uniform(-3, -0.5));
+    const Vec3 to = rng.in_box(1.3);
+    const Vec3 from = q % 3 ? to + rng.uniform(0, 3) * reach * rng.direction() : rng.in_box(1.3);
+    std::fill(times.begin(), times.end(), 0);
+    index.for_each_near_move(from, to, reach, [&](int i) { ++times[i]; });
+    for (std::size_t i = 0; i < tris.size(); ++i) {
+      ASSERT_LE(times[i], 1) << "triangle " << i << " yielded twice, query " << q;
+      const bool near =
+          distance_to_triangle(to, tris[i]) <= reach || segment_meets_triangle(from, to, tris[i]);
+      if (near) {
+        EXPECT_EQ(times[i], 1) << "triangle " << i << " missed, query " << q;
+      }
+      yielded += times[i];
+    }
+    ++queries;
+  }
+  // Not every triangle, most of the time.
+  EXPECT_LT(yielded, queries * tris.size() / 4);
+  // Anything not finite: every triangle, each once.
+  for (const Vec3 &bad : {Vec3{NAN, 0, 0}, Vec3{0, INFINITY, 0}}) {
+    std::fill(times.begin(), times.end(), 0);
+    index.for_each_near_move(bad, {0, 0, 0}, 0.1, [&](int i) { ++times[i]; });
+    EXPECT_EQ(std::count(times.begin(), times.end(), 1), static_cast<long>(tris.size()));
+  }
+}

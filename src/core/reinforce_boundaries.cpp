@@ -82,6 +82,14 @@ long double wide_distance_to_segment(const Wide &x, const Wide &a, const Wide &b
   return std::sqrt(dot(d, d));
 }
 
+// The normal of a triangle (twice its area), the one distance_to_triangle,
+// segment_meets_triangle and the choice of thin triangles use.
+Wide wide_normal(const Triangle &t)
+{
+  const Wide a(t.a), b(t.b), c(t.c);
+  return cross(b - a, c - a);
+}
+
 }    // namespace
 
 double distance_to_triangle(Vec3 x, const Triangle &t)
@@ -93,7 +101,7 @@ double distance_to_triangle(Vec3 x, const Triangle &t)
   // edges).
   long double best = std::min({wide_distance_to_segment(p, a, b), wide_distance_to_segment(p, b, c),
                                wide_distance_to_segment(p, c, a)});
-  const Wide n = cross(b - a, c - a);
+  const Wide n = wide_normal(t);
   const long double n2 = dot(n, n);
   if (n2 > 0) {
     const long double height = dot(p - a, n) / std::sqrt(n2);
@@ -110,7 +118,7 @@ bool segment_meets_triangle(Vec3 p, Vec3 q, const Triangle &t)
   if (!is_finite(p) || !is_finite(q) || !is_finite(t.a) || !is_finite(t.b) || !is_finite(t.c))
     return false;
   const Wide lp(p), lq(q), a(t.a), b(t.b), c(t.c);
-  const Wide n = cross(b - a, c - a);
+  const Wide n = wide_normal(t);
   const long double dp = dot(lp - a, n), dq = dot(lq - a, n);
   if ((dp > 0 && dq > 0) || (dp < 0 && dq < 0)) return false;
   // In the triangle's plane (or degenerate): a sphere sliding in the plane
@@ -143,46 +151,30 @@ bool Boundaries::add(const Cylinder &c)
 bool Boundaries::add(const Triangle &t)
 {
   if (!is_finite(t.a) || !is_finite(t.b) || !is_finite(t.c)) return false;
+  // Beyond the range of doubles (a triangle spanning 1e308): refused.
   const Vec3 centre = (1.0 / 3) * t.a + (1.0 / 3) * t.b + (1.0 / 3) * t.c;
   const double radius = std::max({norm(t.a - centre), norm(t.b - centre), norm(t.c - centre)});
-  if (!is_finite(centre) || !finite(radius)) return false;    // beyond the range of doubles
+  if (!is_finite(centre) || !finite(radius)) return false;
+  // Height h = |n| / L below 1e-6 L; n is exactly 0 only for a triangle
+  // that is a segment or a point, whose distance is its edges' (exact).
+  const Wide n = wide_normal(t);
+  const long double n2 = dot(n, n);
+  const Wide e[3] = {Wide(t.b) - Wide(t.a), Wide(t.c) - Wide(t.b), Wide(t.a) - Wide(t.c)};
+  const long double longest2 = std::max({dot(e[0], e[0]), dot(e[1], e[1]), dot(e[2], e[2])});
   triangles_.push_back(t);
-  bounds_.push_back({centre, radius});
+  thin_.push_back(n2 > 0 && n2 < 1e-12L * longest2 * longest2);
   indexed_ = false;
   return true;
 }
 
-// Cells twice the bounding radius of nine triangles in ten; the rest (far
-// larger than the mesh's typical triangle) are tested on every query.
-void Boundaries::index() const
-{
-  indexed_ = true;
-  std::vector<double> radii;
-  for (const Bound &b : bounds_) radii.push_back(b.radius);
-  if (radii.empty()) return;
-  std::vector<double> sorted = radii;
-  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() * 9 / 10, sorted.end());
-  const double typical = sorted[sorted.size() * 9 / 10];
-  cell_ = std::max(2 * typical, 1e-300);
-  grid_ = CellGrid(cell_);
-  large_.clear();
-  small_radius_ = 0;
-  for (std::size_t i = 0; i < bounds_.size(); ++i) {
-    if (bounds_[i].radius > 4 * typical) {
-      large_.push_back(static_cast<int>(i));
-    } else {
-      grid_.insert(bounds_[i].centre, static_cast<int>(i));
-      small_radius_ = std::max(small_radius_, bounds_[i].radius);
-    }
-  }
-}
-
-template <class F> void Boundaries::for_each_triangle_near(Vec3 x, double range, F &&f) const
+template <class F> void Boundaries::for_each_triangle_near(Vec3 from, Vec3 c, double r, F &&f) const
 {
   if (triangles_.empty()) return;
-  if (!indexed_) index();
-  for (int i : large_) f(triangles_[i]);
-  grid_.for_each_near(x, range + small_radius_, [&](int i) { f(triangles_[i]); });
+  if (!indexed_) {
+    index_.build(triangles_, thin_, r);
+    indexed_ = true;
+  }
+  index_.for_each_near_move(from, c, r, [&](int i) { f(triangles_[i]); });
 }
 
 bool Boundaries::admits(Vec3 from, Vec3 c, double r, double tol) const
@@ -201,12 +193,20 @@ bool Boundaries::admits(Vec3 from, Vec3 c, double r, double tol) const
     // Outside at both ends: the path must not pass through the cylinder.
     if (after >= 0 && closest_approach(start, end - start) < y.radius) return false;
   }
+  // A triangle refuses the move when nearer c than clear <= r, or met by
+  // the path: the index yields every such triangle.
   bool ok = true;
-  const double range = std::max(r, norm(c - from));
-  for_each_triangle_near(c, range, [&](const Triangle &t) {
+  for_each_triangle_near(from, c, r, [&](const Triangle &t) {
     if (ok) ok = distance_to_triangle(c, t) >= clear && !segment_meets_triangle(from, c, t);
   });
   return ok;
+}
+
+std::size_t Boundaries::triangles_tested(Vec3 from, Vec3 c, double r) const
+{
+  std::size_t count = 0;
+  for_each_triangle_near(from, c, r, [&](const Triangle &) { ++count; });
+  return count;
 }
 
 double Boundaries::distance(Vec3 x) const

@@ -15,7 +15,7 @@
 // or tol is never admitted.
 #pragma once
 
-#include "reinforce_cell_grid.h"
+#include "reinforce_triangle_index.h"
 #include "reinforce_vec3.h"
 
 #include <vector>
@@ -34,10 +34,6 @@ struct Cylinder {
   double radius = 0;
 };
 
-struct Triangle {
-  Vec3 a, b, c;
-};
-
 class Boundaries {
 public:
   // A plane or cylinder with a degenerate normal, axis or radius, or a
@@ -51,30 +47,32 @@ public:
   std::size_t size() const { return planes_.size() + cylinders_.size() + triangles_.size(); }
 
   // True when the sphere (c, r), moved from `from`, crosses no surface and
-  // overlaps none by more than tol * r (see above).
+  // overlaps none by more than tol * r (see above). Of a mesh it tests only
+  // the triangles its index yields near the move (reinforce_triangle_index.h),
+  // with the answer of testing every triangle.
   bool admits(Vec3 from, Vec3 c, double r, double tol) const;
 
   // The smallest distance from x to a surface (+infinity with none).
   double distance(Vec3 x) const;
 
+  // How many triangles admits(from, c, r, ...) looks at, each counted once
+  // (all it would test before a verdict): the work of the index, for tests.
+  std::size_t triangles_tested(Vec3 from, Vec3 c, double r) const;
+
 private:
   std::vector<Plane> planes_;
   std::vector<Cylinder> cylinders_;
   std::vector<Triangle> triangles_;
-  // Triangles by the centre of their bounding sphere, and how large the
-  // largest bounding sphere is; the few triangles far larger than the rest
-  // (two triangles spanning a floor) are kept apart and always tested.
-  struct Bound {
-    Vec3 centre;
-    double radius;
-  };
-  std::vector<Bound> bounds_;
-  mutable std::vector<int> large_;
-  mutable CellGrid grid_{1.0};
+  // Slivers so thin (height below 1e-6 of the longest edge, not exactly
+  // degenerate) that the rounding of their normal is not bounded by a small
+  // part of their size: the index yields them to every query, so that its
+  // answer stays that of testing every triangle.
+  std::vector<bool> thin_;
+  // Built at the first query after a triangle is added, for spheres of that
+  // query's radius (reinforce_triangle_index.h).
+  mutable TriangleIndex index_;
   mutable bool indexed_ = false;
-  mutable double cell_ = 0, small_radius_ = 0;
-  void index() const;
-  template <class F> void for_each_triangle_near(Vec3 x, double range, F &&f) const;
+  template <class F> void for_each_triangle_near(Vec3 from, Vec3 c, double r, F &&f) const;
 };
 
 // Distance from x to the triangle (a segment or a point when degenerate).

@@ -54,6 +54,11 @@ void CellGrid::insert_around(Vec3 x, int item)
       for (std::int64_t c = k - 1; c <= k + 1; ++c) cell(key(a, b, c)).push_back(item);
 }
 
+void CellGrid::insert_in_cell(std::int64_t i, std::int64_t j, std::int64_t k, int item)
+{
+  cell(key(i, j, k)).push_back(item);
+}
+
 void CellGrid::erase(Vec3 x, int item)
 {
   const int c = find_cell(key(coord(x.x), coord(x.y), coord(x.z)));

@@ -23,6 +23,13 @@ public:
   // Inserts `item` in the cell of x and its 26 neighbours: then the one
   // cell of any point within one cell size of x lists it (for_each_in_cell).
   void insert_around(Vec3 x, int item);
+  // Inserts `item` in the cell of coordinates (i, j, k): the cell of the
+  // points x with floor(x * cells_per_length()) = (i, j, k), where
+  // for_each_near finds it (the one-cell grid: (0, 0, 0)). For items that
+  // span several cells, such as the triangles of a mesh.
+  void insert_in_cell(std::int64_t i, std::int64_t j, std::int64_t k, int item);
+  // 1 / cell size as the grid uses it (0 for the one-cell grid).
+  double cells_per_length() const { return inv_cell_; }
   // Removes `item`, inserted at (or last moved to) x.
   void erase(Vec3 x, int item);
   // Moves `item` from the cell of `from` to the cell of `to`.

@@ -13,6 +13,12 @@
       radius of a wall (the scene tests the walls). Prints PASS or FAIL
       lines; exit status 1 on a FAIL.
 
+  walls.py mould STL CX CY R Z0 Z1 SEGMENTS
+      Writes an ASCII STL closed cylinder about the z axis through (CX, CY)
+      from Z0 to Z1, as an STL mesher makes one: per segment two long slivers
+      of the side spanning its height and a thin triangle of each cap's fan
+      from its centre (4 * SEGMENTS triangles, vertices on the circle R).
+
 WALL: --plane PX PY PZ NX NY NZ (held side: the normal's), --cylinder
 x|y|z C1 C2 R inside|outside (C1 C2: the centre's coordinates in the other
 two axes, in x y z order), --stl FILE (ASCII; spheres are held on the side
@@ -235,10 +241,41 @@ def check(argv):
     return 1 if fail else 0
 
 
+def mould(argv):
+    path = argv[0]
+    cx, cy, r, z0, z1 = (float(a) for a in argv[1:6])
+    segments = int(argv[6])
+    if segments < 3 or not r > 0 or not z1 > z0:
+        sys.exit("walls.py mould: need SEGMENTS >= 3, R > 0, Z1 > Z0")
+    rim = [(cx + r * math.cos(2 * math.pi * i / segments), cy + r * math.sin(2 * math.pi * i / segments))
+           for i in range(segments)]
+    tris = []
+    for i in range(segments):
+        (x0, y0), (x1, y1) = rim[i], rim[(i + 1) % segments]
+        # Counter-clockwise seen from outside: normals point out of the mould.
+        tris.append(((x0, y0, z0), (x1, y1, z0), (x1, y1, z1)))
+        tris.append(((x0, y0, z0), (x1, y1, z1), (x0, y0, z1)))
+        tris.append(((cx, cy, z0), (x1, y1, z0), (x0, y0, z0)))
+        tris.append(((cx, cy, z1), (x0, y0, z1), (x1, y1, z1)))
+    with open(path, "w") as f:
+        f.write("solid mould\n")
+        for a, b, c in tris:
+            n = cross(sub(b, a), sub(c, a))
+            n = tuple(v / norm(n) for v in n)
+            f.write("  facet normal %.17g %.17g %.17g\n    outer loop\n" % n)
+            for v in (a, b, c):
+                f.write("      vertex %.17g %.17g %.17g\n" % v)
+            f.write("    endloop\n  endfacet\n")
+        f.write("endsolid mould\n")
+    print("walls.py mould: %d triangles in %s" % (len(tris), path))
+
+
 if __name__ == "__main__":
-    if len(sys.argv) < 4 or sys.argv[1] not in ("clip", "check"):
+    if len(sys.argv) < 4 or sys.argv[1] not in ("clip", "check", "mould"):
         sys.exit(__doc__)
     if sys.argv[1] == "clip":
         clip(sys.argv[2:])
+    elif sys.argv[1] == "mould":
+        mould(sys.argv[2:])
     else:
         sys.exit(check(sys.argv[2:]))
