@@ -44,3 +44,10 @@ run multisphere -var bars multisphere
   done
 } > out/table.md
 cat out/table.md
+# README.md: the block between the markers is this run's out/table.md.
+awk 'FNR == NR {table = table $0 "\n"; next}
+     /^<!-- written by run.sh/ {print; printf "%s", table; skip = 1; next}
+     /^<!-- end of what run.sh writes/ {skip = 0}
+     !skip {print}' out/table.md README.md > out/README.md
+mv out/README.md README.md
+echo "README.md updated"
