@@ -4,7 +4,8 @@
 # lmp_reinforce under mpirun (REINFORCE_BEAM_NP processes, default 2).
 # Writes examples/beam/out/: a picture, a dump, a data file and a profile
 # plot (solid fraction against distance from the bars) per density,
-# and table.md.
+# table.md and quality.md; with the three densities, puts the two tables
+# into examples/beam/README.md between its markers.
 set -euo pipefail
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 source "$top/scripts/setup.sh"
@@ -74,3 +75,17 @@ for phi in ${REINFORCE_BEAM_PHIS:-050 060 064}; do
 done
 echo "profiles: $(ls "$top"/examples/beam/out/profile_phi*.svg | tr '\n' ' ')"
 echo "pictures: $(ls "$top"/examples/beam/out/*.png | tr '\n' ' ')"
+# README.md: each block between markers is this run's table (the three
+# densities only, so that a partial run leaves the README as it was).
+fill() {    # fill TABLE: the block after "<!-- written by run-beam.sh from TABLE"
+  awk -v name="$1" 'FNR == NR {table = table $0 "\n"; next}
+       index($0, "<!-- written by run-beam.sh from " name) == 1 {print; printf "%s", table; skip = 1; next}
+       /^<!-- end of what run-beam.sh writes/ {skip = 0}
+       !skip {print}' "$1" README.md > out/README.md
+  mv out/README.md README.md
+}
+if [ "${REINFORCE_BEAM_PHIS:-050 060 064}" = "050 060 064" ]; then
+  fill out/table.md
+  fill out/quality.md
+  echo "README.md updated"
+fi
