@@ -49,9 +49,10 @@ void numeric_arguments(const std::uint8_t *data, std::size_t size)
     const bool physical = std::fabs(v[8]) < 1e100 && std::fabs(v[9]) < 1e100;
     if (physical && (!std::isfinite(f.read) || !std::isfinite(f.write) || !std::isfinite(s.search)))
       __builtin_trap();
-    // The regrowth's zone (asked for here): positive, and its reach finite.
-    const RegrowthReach g = regrowth_reach(s.regrow, std::fabs(v[8]), std::fabs(v[8]));
-    if (physical && (!(s.regrow > 0) || !std::isfinite(g.read))) __builtin_trap();
+    // The regrowth's zone (asked for here): positive, and the ghost reach
+    // it needs finite.
+    const double reach = regrowth_ghost_reach(std::fabs(v[8]), std::fabs(v[8]), s.search);
+    if (physical && (!(s.regrow > 0) || !std::isfinite(reach))) __builtin_trap();
   } catch (const OptionError &) {
   }
 }
