@@ -43,7 +43,8 @@
 # with SCENE_REFERENCE=1 also given the after dump of the same input run on
 # one process (-var procs "1 1 1", and -var setup "$SCENE_REFERENCE_SETUP"
 # when that is set: a setup command that needs several processes), as a
-# third file.
+# third file. SCENE_REFERENCE_EXTRA, when set (even empty), is the
+# reference run's -var extra instead (the keywords a run must match).
 # SCENE_LOG_POST="command args": run as `command args LOG [REFERENCE_LOG]` at
 # the end, on what the fix logged (the run's log, and with SCENE_REFERENCE=1
 # that of the 1-process run), e.g. ghost_cutoff.sh.
@@ -216,6 +217,7 @@ reference=() reference_log=()
 if [ -n "${SCENE_POST:-}${SCENE_LOG_POST:-}" ] && [ "${SCENE_REFERENCE:-0}" = 1 ]; then
   ref_args=(-var procs "1 1 1")    # the same input on one process (the first -var of a name wins)
   [ -n "${SCENE_REFERENCE_SETUP:-}" ] && ref_args+=(-var setup "$SCENE_REFERENCE_SETUP")
+  [ -n "${SCENE_REFERENCE_EXTRA+set}" ] && ref_args+=(-var extra "$SCENE_REFERENCE_EXTRA")
   run "$work/ref" 1 "${ref_args[@]}"
   reference=("$work/ref/after.dump") reference_log=("$work/ref/log")
 fi
