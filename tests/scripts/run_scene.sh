@@ -44,7 +44,8 @@
 # one process (-var procs "1 1 1", and -var setup "$SCENE_REFERENCE_SETUP"
 # when that is set: a setup command that needs several processes), as a
 # third file. SCENE_REFERENCE_EXTRA, when set (even empty), is the
-# reference run's -var extra instead (the keywords a run must match).
+# reference run's -var extra instead (the keywords a run must match), and
+# SCENE_REFERENCE_INPUT its input (another way to the same scene).
 # SCENE_LOG_POST="command args": run as `command args LOG [REFERENCE_LOG]` at
 # the end, on what the fix logged (the run's log, and with SCENE_REFERENCE=1
 # that of the 1-process run), e.g. ghost_cutoff.sh.
@@ -58,11 +59,11 @@ while [ $# -gt 0 ] && [ "$1" != "--" ]; do vars+=("$1"); shift; done
 check_args=("$@")
 
 . "$(dirname "${BASH_SOURCE[0]}")/test_env.sh" "scene_${name}"
-indir=$(cd "$(dirname "$input")" && pwd)
 
 fail() { echo "FAIL: $*"; exit 1; }
-run() {    # run OUTDIR [NP [first lmp args]]
-  local dir=$1 n=${2:-$np}
+run() {    # run OUTDIR [NP [first lmp args]]; the input: $input
+  local dir=$1 n=${2:-$np} indir
+  indir=$(cd "$(dirname "$input")" && pwd)
   shift; [ $# -gt 0 ] && shift
   mkdir -p "$dir"
   local launch=(mpirun -np "$n")
@@ -218,7 +219,7 @@ if [ -n "${SCENE_POST:-}${SCENE_LOG_POST:-}" ] && [ "${SCENE_REFERENCE:-0}" = 1 
   ref_args=(-var procs "1 1 1")    # the same input on one process (the first -var of a name wins)
   [ -n "${SCENE_REFERENCE_SETUP:-}" ] && ref_args+=(-var setup "$SCENE_REFERENCE_SETUP")
   [ -n "${SCENE_REFERENCE_EXTRA+set}" ] && ref_args+=(-var extra "$SCENE_REFERENCE_EXTRA")
-  run "$work/ref" 1 "${ref_args[@]}"
+  input=${SCENE_REFERENCE_INPUT:-$input} run "$work/ref" 1 "${ref_args[@]}"
   reference=("$work/ref/after.dump") reference_log=("$work/ref/log")
 fi
 if [ -n "${SCENE_POST:-}" ]; then
