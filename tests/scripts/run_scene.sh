@@ -46,6 +46,9 @@
 # third file. SCENE_REFERENCE_EXTRA, when set (even empty), is the
 # reference run's -var extra instead (the keywords a run must match), and
 # SCENE_REFERENCE_INPUT its input (another way to the same scene).
+# SCENE_SCREEN_FILE=1: each run's screen output to a file beside its log
+# instead of -screen none (LIGGGHTS 3.8 inserting multisphere clumps
+# writes to the screen unchecked: a segmentation fault without one).
 # SCENE_LOG_POST="command args": run as `command args LOG [REFERENCE_LOG]` at
 # the end, on what the fix logged (the run's log, and with SCENE_REFERENCE=1
 # that of the 1-process run), e.g. ghost_cutoff.sh.
@@ -68,7 +71,9 @@ run() {    # run OUTDIR [NP [first lmp args]]; the input: $input
   mkdir -p "$dir"
   local launch=(mpirun -np "$n")
   [ "$n" -eq 1 ] && launch=()    # serial: the executable itself (no mpirun start-up)
-  (cd "$indir" && "${launch[@]}" "$exe" -in "$input" -log "$dir/log" -screen none \
+  local screen=none
+  [ "${SCENE_SCREEN_FILE:-0}" = 1 ] && screen=$dir/screen
+  (cd "$indir" && "${launch[@]}" "$exe" -in "$input" -log "$dir/log" -screen "$screen" \
      -var out "$dir" "$@" "${vars[@]}") || { echo "FAIL: $exe exited non-zero"; tail -5 "$dir/log"; exit 1; }
 }
 last() { grep "^$1 " "$2" | tail -1 || true; }    # last line starting with a word
