@@ -16,7 +16,7 @@
 set(REINFORCE_SLOW_TESTS
     "^quality_(make_dense_scenes|dense_np[0-9]+|fibres_small_np[0-9]+)$"
     "_np8$" "^lammps_seams_" "^stability_big_bars_" "^test_command_selfcheck$" "^bench_quick$"
-    "^lammps_identical_every_np[3-9]$" "^src_")
+    "^lammps_identical_every_np[3-9]$" "^lammps_removed_volume_beam_" "^src_")
 
 function(reinforce_label_tests)
   get_property(tests DIRECTORY PROPERTY TESTS)
@@ -26,7 +26,7 @@ function(reinforce_label_tests)
       list(APPEND labels quality)
     elseif(t MATCHES "^(bench_|stiff_)")
       list(APPEND labels bench)
-    elseif(t MATCHES "^(lammps_|liggghts_|stability_|src_|layout_(read|scene)_)")
+    elseif(t MATCHES "^(lammps_|liggghts_|stability_|src_|layout_(read|scene|clumps)_)")
       list(APPEND labels scene)
     else()
       list(APPEND labels tools)

@@ -43,7 +43,12 @@
 # with SCENE_REFERENCE=1 also given the after dump of the same input run on
 # one process (-var procs "1 1 1", and -var setup "$SCENE_REFERENCE_SETUP"
 # when that is set: a setup command that needs several processes), as a
-# third file.
+# third file. SCENE_REFERENCE_EXTRA, when set (even empty), is the
+# reference run's -var extra instead (the keywords a run must match), and
+# SCENE_REFERENCE_INPUT its input (another way to the same scene).
+# SCENE_SCREEN_FILE=1: each run's screen output to a file beside its log
+# instead of -screen none (LIGGGHTS 3.8 inserting multisphere clumps
+# writes to the screen unchecked: a segmentation fault without one).
 # SCENE_LOG_POST="command args": run as `command args LOG [REFERENCE_LOG]` at
 # the end, on what the fix logged (the run's log, and with SCENE_REFERENCE=1
 # that of the 1-process run), e.g. ghost_cutoff.sh.
@@ -57,16 +62,18 @@ while [ $# -gt 0 ] && [ "$1" != "--" ]; do vars+=("$1"); shift; done
 check_args=("$@")
 
 . "$(dirname "${BASH_SOURCE[0]}")/test_env.sh" "scene_${name}"
-indir=$(cd "$(dirname "$input")" && pwd)
 
 fail() { echo "FAIL: $*"; exit 1; }
-run() {    # run OUTDIR [NP [first lmp args]]
-  local dir=$1 n=${2:-$np}
+run() {    # run OUTDIR [NP [first lmp args]]; the input: $input
+  local dir=$1 n=${2:-$np} indir
+  indir=$(cd "$(dirname "$input")" && pwd)
   shift; [ $# -gt 0 ] && shift
   mkdir -p "$dir"
   local launch=(mpirun -np "$n")
   [ "$n" -eq 1 ] && launch=()    # serial: the executable itself (no mpirun start-up)
-  (cd "$indir" && "${launch[@]}" "$exe" -in "$input" -log "$dir/log" -screen none \
+  local screen=none
+  [ "${SCENE_SCREEN_FILE:-0}" = 1 ] && screen=$dir/screen
+  (cd "$indir" && "${launch[@]}" "$exe" -in "$input" -log "$dir/log" -screen "$screen" \
      -var out "$dir" "$@" "${vars[@]}") || { echo "FAIL: $exe exited non-zero"; tail -5 "$dir/log"; exit 1; }
 }
 last() { grep "^$1 " "$2" | tail -1 || true; }    # last line starting with a word
@@ -216,7 +223,8 @@ reference=() reference_log=()
 if [ -n "${SCENE_POST:-}${SCENE_LOG_POST:-}" ] && [ "${SCENE_REFERENCE:-0}" = 1 ]; then
   ref_args=(-var procs "1 1 1")    # the same input on one process (the first -var of a name wins)
   [ -n "${SCENE_REFERENCE_SETUP:-}" ] && ref_args+=(-var setup "$SCENE_REFERENCE_SETUP")
-  run "$work/ref" 1 "${ref_args[@]}"
+  [ -n "${SCENE_REFERENCE_EXTRA+set}" ] && ref_args+=(-var extra "$SCENE_REFERENCE_EXTRA")
+  input=${SCENE_REFERENCE_INPUT:-$input} run "$work/ref" 1 "${ref_args[@]}"
   reference=("$work/ref/after.dump") reference_log=("$work/ref/log")
 fi
 if [ -n "${SCENE_POST:-}" ]; then

@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# Where matrix spheres (type 1) went, for scene tests (SCENE_POST).
-#   where.sh moved 'COND' BEFORE AFTER      every moved sphere satisfies COND
-#                                           at its new place (a region test)
+# Where spheres went, for scene tests (SCENE_POST).
+#   where.sh moved 'COND' BEFORE AFTER      every moved atom (any type: a
+#                                           moved bar breaks a region too)
+#                                           satisfies COND at its new place
+#                                           (a region test)
 #   where.sh unchanged 'COND' BEFORE AFTER  every sphere that satisfied COND
-#                                           before is there, unmoved (atoms
-#                                           outside the fix group)
+#                                           before is there, unmoved (matrix
+#                                           spheres, type 1, outside the fix
+#                                           group)
 # COND is an awk expression of x, y, z and r (the radius).
 set -euo pipefail
 mode=$1 cond=$2 before=$3 after=$4
@@ -13,7 +16,7 @@ awk -v mode="$mode" -v cond="$cond" '
   FNR == 1 { file++ }
   /^ITEM: ATOMS/ { delete c; for (i = 3; i <= NF; i++) c[$i] = i - 2; body = 1; next }
   /^ITEM:/ { body = 0; next }
-  !body || $c["type"] != 1 { next }
+  !body || (mode == "unchanged" && $c["type"] != 1) { next }
   {
     id = $c["id"]; x = $c["x"]; y = $c["y"]; z = $c["z"]; r = $c["radius"]
     line = x " " y " " z " " r
