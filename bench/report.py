@@ -9,6 +9,7 @@ Load and tables: bench/results.py (the method names from bench/methods.tsv, whic
 each one's prose beside the table it explains: here (the methods compared) and bench/report_cost.py (cost).
 """
 import html
+import math
 import os
 import sys
 
@@ -50,10 +51,11 @@ def introduction(run):
         scenes.append(f"**narrow**: a packing of radii {lo:g}-{hi:g} mm (ratio {hi / lo:.2f}) at solid fraction "
                       f"{narrow['phi']}, {int(narrow['matrix']):,} spheres in a box {narrow['box']} m, grown alone "
                       f"by `build/tests/grow_packing` (seed {narrow['seed']}), then {narrow['rebar']} rebar spheres "
-                      "added" + ("" if run.quick else " (the beam's five bars)"))
+                      "added" + ("" if run.quick else " (the beam's five bars, as long as the box)"))
     if "slab" in run.scenes():
-        scenes.append("the slab: the 0.60 beam packing replicated 2 x 5 x 2 with a mesh of bars 0.1 m apart in two "
-                      "layers (`bench/make_bars.sh`)")
+        scenes.append(f"the slab: the 0.60 beam packing replicated {run.meta.get('slab_replication', '?').replace(' ', ' x ')}"
+                      f" ({run.meta.get('box_slab', '?')} m) with a mesh of bars 0.1 m apart in two layers "
+                      "(`bench/make_bars.sh`)")
     if "liggghts" in run.scenes():
         scenes.append("**liggghts**: the LIGGGHTS example (`examples/liggghts/in.liggghts`, run by "
                       "`liggghts_reinforce`): `fix insert/pack` with radii 3, 4, 5 mm, settled under gravity, cut "
@@ -318,9 +320,43 @@ def write(out_dir, docs, readme=None):
         readme_figures.write(run, readme)
 
 
+def implausible(run):
+    """Figures that cannot be right, whatever the machine's speed: a fix's targets not relocated + deleted, an
+    overlap the fix left (none above the packings' own), an operation time not within its process time, a shell
+    or removed ratio not finite and in a plausible range (every scene but LIGGGHTS's has a scene before, hence a
+    removed ratio), a ratio of the page's "Ratios" table not finite and positive."""
+    bad = []
+
+    def finite_in(v, lo, hi):
+        return v is not None and math.isfinite(v) and lo <= v < hi
+    for r in run.rows:
+        what, op, wall = f"{r['scene']} {r['method']} {r['param']} np {r['np']} run {r['rep']}", *(
+            num(r[k]) for k in ("op_seconds", "wall_seconds"))
+        if not (op is not None and wall is not None and 0 <= op <= wall):
+            bad.append(f"{what}: operation {r['op_seconds']} s not within the process's {r['wall_seconds']} s")
+        if not r["method"].startswith("fix"):
+            continue
+        t, rel, d = (num(r[k]) for k in ("targets", "relocated", "deleted"))
+        if None in (t, rel, d) or rel + d != t:
+            bad.append(f"{what}: relocated {r['relocated']} + deleted {r['deleted']} != targets {r['targets']}")
+        if not finite_in(num(r["overlap"]), -1, 1e-6):    # the packings' own overlaps are relaxed to 1e-6 rmin
+            bad.append(f"{what}: largest overlap {r['overlap']} rmin")
+    for q in run.quality:
+        what = f"quality of {q['scene']} {q['method']} {q['param']}"
+        if not finite_in(num(q["shell_ratio"]), 1e-3, 2):
+            bad.append(f"{what}: shell ratio {q['shell_ratio']}")
+        if q["scene"] != "liggghts" and not finite_in(num(q["removed_ratio"]), 0, 20):    # 0: every target kept
+            bad.append(f"{what}: removed ratio {q['removed_ratio']}")
+    for scene, fix, _, _, big, _ in summary(run):
+        if not finite_in(fix["op_seconds"] / big["op_seconds"] if big["op_seconds"] else None, 1e-9, math.inf):
+            bad.append(f"{scene}: defaults / delete_atoms from {fix['op_seconds']} s / {big['op_seconds']} s")
+    return bad
+
+
 def check(out_dir, docs):
     """Every section's heading, every plot the page names (each profile with a line per method and reference)
-    and README's figures: the quick run's check that the page is whole."""
+    and README's figures: the quick run's check that the page is whole; and that its figures are plausible
+    (implausible)."""
     run, page = Run(out_dir), open(os.path.join(docs, "benchmarks.md")).read()
     missing = [f"section {s}" for s in SECTIONS if f"\n## {s}\n" not in page]
     missing += [f"plot {p}" for p in ("error_time.png",) + tuple(f"profile_{s}.svg" for s in
@@ -337,6 +373,7 @@ def check(out_dir, docs):
                 and not (r["targets"] and r["op_seconds"] and r["rounds"])]
     missing += [f"the reference figures of {q['scene']} {q['method']}" for q in run.quality
                 if q["scene"] in {g["scene"] for g in run.grown if g["kind"] == "around"} and not q["ref_shell_ratio"]]
+    missing += [f"a plausible figure: {b}" for b in implausible(run)]
     readme = os.path.join(docs, "README.md")
     if os.path.exists(readme) and "\n* Where the matrix radii are close" not in open(readme).read():
         missing.append("README.md's figures")

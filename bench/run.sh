@@ -37,17 +37,23 @@ mkdir -p "$out/scenes" "$out/runs" "$docs"
 # scenes.tsv: the quick and the full run's scenes, in the order they run: every
 # method runs on a "methods" row's scene; the other rows are packings grown
 # around the bars (a reference: "around" by grow_packing, "lammps" by the beam's
-# own make_packing.lmp) or "alone" (the scene itself, the bars then added).
+# own make_packing.lmp) or "alone" (the scene itself, the bars then added);
+# a "methods" row names the methods.tsv keys it runs ("all": every one).
 mapfile -t methods < <(tail -n +2 "$top/bench/methods.tsv")
 mapfile -t scenes < <(awk -F'\t' -v r="$([ "$quick" = 1 ] && echo quick || echo full)" '$1 == r' "$top/bench/scenes.tsv")
 if [ "$quick" = 1 ]; then
-  relax_scenes=(small) relax_chunks=2 relax_steps=20 liggghts_repeats=1 liggghts_methods=1
+  # The LIGGGHTS example's settling is fixed (15,000 steps); the relocation alone keeps its fix short.
+  relax_scenes=(small) relax_chunks=2 relax_steps=20 liggghts_repeats=1 liggghts_methods=norgrow
   speedups=("small 1") gap_scene=small gap_repeats=1 rbar_lx=0.125 rbar_cut=0.125 rbar_repeats=1
   # The quick case checks that every figure is produced, not its precision.
   export QUALITY_ARGS=${QUALITY_ARGS:---points 200000}
 else
-  relax_scenes=(beam050 beam060 beam064) relax_chunks=10 relax_steps=500 liggghts_repeats=2 liggghts_methods=99
-  speedups=("beam060 25") gap_scene=beam060 gap_repeats=3 rbar_lx=0.5 rbar_cut=0 rbar_repeats=3
+  # Sized to finish in about 25 minutes on 2 cores (bench/README.md): the regrowth takes tens of seconds on the
+  # 0.64 beam and minutes on the slab, so the slab's speedup runs once and the variants of the defaults run on
+  # the 0.60 beam only (scenes.tsv).
+  relax_scenes=(beam050 beam060 beam064) relax_chunks=10 relax_steps=300 liggghts_repeats=2
+  liggghts_methods=defaults speedups=("beam060 7") gap_scene=beam060 gap_repeats=3 rbar_lx=0.5 rbar_cut=0
+  rbar_repeats=3 slab_rep="2 2 2" slab_speedups=1 slab_repeats=2 scaling_repeats=2
 fi
 parts=(reference compare narrow more liggghts speedup gap rbar relax slab scaling)
 gaps=("1 0.0075" "10 0.075" "100 0.75" "1e20 1e20")    # search in rmax, and in metres
@@ -57,9 +63,12 @@ declare -A grower=([around]=grow_packing [lammps]=make_packing.lmp)
 geometry() {
   case $quick$1 in
     1narrow) printf '%s\n' --box 0 0.12 0 0.1 0 0.1 --bar 0.005 0.05 0.05 0.115 0.05 0.05 0.005 0.0075 ;;
-    0beam*|0narrow) printf '%s\n' --box 0 0.5 0 0.25 0 0.25    # the beam's five bars (examples/beam/make_bars.sh)
+    0beam*|0narrow)    # the beam's five bars (examples/beam/make_bars.sh); the narrow scene in half its length,
+      # where the regrowth takes minutes a run
+      local lx=0.5 && [ "$1" = narrow ] && lx=0.25
+      printf '%s\n' --box 0 "$lx" 0 0.25 0 0.25
       for yz in "0.04 0.04" "0.125 0.04" "0.21 0.04" "0.04 0.21" "0.21 0.21"; do
-        printf '%s\n' --bar 0.005 ${yz% *} ${yz#* } 0.495 ${yz% *} ${yz#* } 0.005 0.00766
+        printf '%s\n' --bar 0.005 ${yz% *} ${yz#* } "$(calc "$lx - 0.005")" ${yz% *} ${yz#* } 0.005 0.00766
       done ;;
     0one|0fibres) bash "$top/tests/quality/make_scenes.sh" --args "$1" ;;
   esac
@@ -256,18 +265,26 @@ scene_file() {
     small) [ -f "$data" ] || "$make_scene" "$data" --fcc --box 0 0.2 0 0.1 0 0.1 --radius 0.005 0.0075 \
              --bar 0.01 0.05 0.05 0.19 0.05 0.05 0.005 0.0077 > /dev/null ;;
     beam*) prepared "$data" "$beam/bars.data" -var matrix "$beam/matrix_phi${1#beam}.data.gz" ;;
-    slab) # the 0.60 beam replicated 2 x 5 x 2 (1.0 x 1.25 x 0.5 m), a mesh of bars 0.1 m apart in two layers
-      [ -f "$data" ] || bash "$top/bench/make_bars.sh" "$out/scenes/mesh.data" 1.0 1.25 0.5 mesh 0.1 0.04
-      prepared "$data" "$out/scenes/mesh.data" -var matrix "$beam/matrix_phi060.data.gz" -var rep "2 5 2" ;;
+    slab) # the 0.60 beam replicated (slab_rep: 2 x 2 x 2 is 1.0 x 0.5 x 0.5 m), a mesh of bars 0.1 m apart in
+      # two layers; named by its replication, so that a slab of another size is not taken from the cache
+      local r && read -r -a r <<<"$slab_rep" && data="$out/scenes/slab_${slab_rep// /x}.data"
+      [ -f "$data" ] || bash "$top/bench/make_bars.sh" "$out/scenes/mesh.data" "$(calc "${r[0]} * 0.5")" \
+        "$(calc "${r[1]} * 0.25")" "$(calc "${r[2]} * 0.25")" mesh 0.1 0.04
+      prepared "$data" "$out/scenes/mesh.data" -var matrix "$beam/matrix_phi060.data.gz" -var rep "$slab_rep" ;;
   esac
 }
 
 # --- the parts ----------------------------------------------------------------------------------
-# bench_scene NAME RMIN RMAX RBAR REPEATS WHERE [MAX]: the methods of the table
-# that run on WHERE (at most MAX of them), 1 process, interleaved in each
+# chosen ROW WHERE KEYS: true when the methods.tsv ROW runs on WHERE and its
+# key is one of KEYS (comma-separated, or "all").
+chosen() {
+  [[ ,$(cut -f6 <<<"$1"), == *,$2,* ]] && { [ "$3" = all ] || [[ ,$3, == *,$(cut -f1 <<<"$1"),* ]]; }
+}
+# bench_scene NAME RMIN RMAX RBAR REPEATS WHERE [KEYS]: the methods of the table
+# that run on WHERE (those of KEYS, default all), 1 process, interleaved in each
 # repeat; the quality of the first repeat of each (not on the slab).
 bench_scene() {
-  local name=$1 rmin=$2 rmax=$3 rbar=$4 reps=$5 where=$6 max=${7:-99} m n rep method param keywords plot before=-
+  local name=$1 rmin=$2 rmax=$3 rbar=$4 reps=$5 where=$6 keys=${7:-all} m rep method param keywords plot before=-
   scene_file "$name"
   if [ "$data" != - ]; then    # its size and box; the scene before, as a text dump, for its quality
     echo "== $name ($(count_atoms "$data") atoms)" && meta "box_$name" "$(box_of "$data")" && before=${data%.data}.before.dump
@@ -275,9 +292,8 @@ bench_scene() {
       -var out "$before" -log none -screen none) || die "writing $before failed"
   fi
   for rep in $(seq "$reps"); do
-    n=0
     for m in "${methods[@]}"; do
-      [[ ,$(cut -f6 <<<"$m"), == *,$where,* ]] && [ $((n += 1)) -le "$max" ] || continue
+      chosen "$m" "$where" "$keys" || continue
       resolve "$m" "$rmin" "$rmax" "$rbar"
       run_method "$name" "$data" "$method" "$param" "$keywords" 1 "$rep" "$rmin"
       [ "$rep" = 1 ] && [ "$where" != slab ] && quality "$name" "$before" "$after" "$method" "$param" "$rmin" "$rmax" "$plot"
@@ -320,13 +336,14 @@ relax() {
     wall_seconds="$wall" peak_kb="$peak"
 }
 # scaling NAME LX LY BARS CUT REPLICATION: BARS bars along x in the 0.60 beam
-# packing cut at CUT (0: not) and replicated, the fix's defaults 3 times.
+# packing cut at CUT (0: not) and replicated, the fix's defaults scaling_repeats
+# times (param: BARS).
 scaling() {
   local rep
   bash "$top/bench/make_bars.sh" "$out/scenes/bars.data" "$2" "$3" 0.25 line "$4"
   data="$out/scenes/scaling.data"
   prepared "$data" "$out/scenes/bars.data" -var matrix "$beam/matrix_phi060.data.gz" -var cut "$5" -var rep "$6"
-  for rep in 1 2 3; do series "$1" "$data" "fix defaults" 1 "$rep"; done
+  for rep in $(seq "$scaling_repeats"); do series "$1" "$data" "fix defaults" 1 "$rep" "$4" ""; done
   rm -f "$data"
 }
 
@@ -339,9 +356,9 @@ for p in "${parts[@]}"; do
   [ "$quick" = 1 ] && [[ " more slab scaling " == *" $p "* ]] && continue
   part "$p" || continue
   for s in "${scenes[@]}"; do
-    IFS=$'\t' read -r _ name spart kind rmin rmax rbar reps phi seed <<<"$s"
+    IFS=$'\t' read -r _ name spart kind rmin rmax rbar reps phi seed keys <<<"$s"
     if [ "$spart" != "$p" ]; then continue
-    elif [ "$kind" = methods ]; then bench_scene "$name" "$rmin" "$rmax" "$rbar" "${repeats:-$reps}" scenes
+    elif [ "$kind" = methods ]; then bench_scene "$name" "$rmin" "$rmax" "$rbar" "${repeats:-$reps}" scenes "$keys"
     else grown "$name" "$kind" "$seed" "$rmin" "$rmax" "$phi"; fi
   done
   case $p in
@@ -352,7 +369,7 @@ for p in "${parts[@]}"; do
       for s in "${speedups[@]}"; do speedup $s; done
       # The cost of the rounds' exchange against the number of partners (the model of larger runs).
       [ "$quick" = 1 ] || mpirun -np 2 "$REINFORCE_BUILD/bench/exchange_cost" > "$out/exchange_cost.tsv" ;;
-    slab) speedup slab 5; bench_scene slab 0.0025 0.0075 0.005 3 slab ;;    # no relaxation: too long
+    slab) meta slab_replication "$slab_rep"; speedup slab "$slab_speedups"; bench_scene slab 0.0025 0.0075 0.005 "$slab_repeats" slab ;;    # no relaxation: too long
     gap)
       scene_file "$gap_scene"
       for rep in $(seq "$gap_repeats"); do
@@ -374,18 +391,25 @@ for p in "${parts[@]}"; do
       for r in "0.125 1 1 1" "0 1 1 1" "0 2 2 1" "0 4 2 2"; do
         scaling scaling_size 0.125 0.25 1 ${r% * * *} "${r#* }"
       done
-      for n in 1 2 4 8 16; do scaling scaling_targets 1.0 1.0 "$n" 0 "2 4 1"; done ;;
+      for n in 1 2 4 8; do scaling scaling_targets 1.0 1.0 "$n" 0 "2 4 1"; done ;;
   esac
 done
 # The rows this run's tables call for, which report.py --check counts: per scene
-# a row of results and of quality per method that runs on scenes, the
-# LIGGGHTS example its methods, every series point its row.
-on() { cut -f6 "$top/bench/methods.tsv" | grep -c "\b$1\b"; }    # on WHERE: how many methods run there
-n=$(printf '%s\n' "${scenes[@]}" | grep -c $'\tmethods\t') lig=0
-[ ! -x "$liggghts" ] || lig=$(($(on liggghts) < liggghts_methods ? $(on liggghts) : liggghts_methods))
-[ "$quick" = 0 ] || meta want "results $((n * $(on scenes) + lig + ${#relax_scenes[@]} + ${#nps[@]} + ${#gaps[@]} \
-  + ${#rbars[@]})) quality $((n * $(on scenes) + lig)) reference $((${#scenes[@]} - n)) relax $((${#relax_scenes[@]} \
-  * (relax_chunks + 1)))"
+# a row of results and of quality per method it runs, the LIGGGHTS example its
+# methods, every series point its row.
+on() {    # on WHERE KEYS: how many methods run there
+  local m k=0
+  for m in "${methods[@]}"; do chosen "$m" "$1" "$2" && k=$((k + 1)); done
+  echo "$k"
+}
+n=0 lig=0 grown_rows=0
+for s in "${scenes[@]}"; do
+  IFS=$'\t' read -r _ _ _ kind _ _ _ _ _ _ keys <<<"$s"
+  if [ "$kind" = methods ]; then n=$((n + $(on scenes "$keys"))); else grown_rows=$((grown_rows + 1)); fi
+done
+[ ! -x "$liggghts" ] || lig=$(on liggghts "$liggghts_methods")
+[ "$quick" = 0 ] || meta want "results $((n + lig + ${#relax_scenes[@]} + ${#nps[@]} + ${#gaps[@]} + ${#rbars[@]})) \
+quality $((n + lig)) reference $grown_rows relax $((${#relax_scenes[@]} * (relax_chunks + 1)))"
 meta load_end "$(cut -d' ' -f1-3 /proc/loadavg)"
 meta minutes "$(calc "($(date +%s) - $start_s) / 60" %.1f)"
 # README.md's figures from the same run: the repository's own when the page goes

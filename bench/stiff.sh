@@ -9,10 +9,12 @@ if [ -z "${REINFORCE_BUILD:-}" ]; then source "$top/scripts/setup.sh"; fi
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 lmp="$REINFORCE_BUILD/src/lammps/lmp_reinforce"
 out=${REINFORCE_BENCH_OUT:-$top/bench/out}/stiff
-mkdir -p "$out"
 scene=${REINFORCE_BENCH_OUT:-$top/bench/out}/scenes/beam060.data
+mkdir -p "$out" "$(dirname "$scene")"
 [ -f "$scene" ] || "$lmp" -in "$top/bench/lammps/in.prepare" -var matrix "$top/examples/beam/data/matrix_phi060.data.gz" \
   -var bars "$top/examples/beam/data/bars.data" -var out "$scene" -log none -screen none
+commit=$(git -C "$top" rev-parse --short HEAD 2>/dev/null || echo unknown)
+spheres=$(awk '/ atoms$/ {printf "%\047d", $1; exit}' "$scene")
 rows=()
 for method in fix delete relax none; do
   mkdir -p "$out/$method"
@@ -29,8 +31,9 @@ done
 {
   echo "# The stiff follow-on run after each method"
   echo
-  echo "Measured $(date +%Y-%m-%d) on the project's 2-core VM by \`bash bench/stiff.sh\`. Scene: the"
-  echo "beam at solid fraction 0.60 with its five bars (28,973 spheres). Each method first deals with"
+  echo "Measured $(date -u '+%Y-%m-%d %H:%M UTC') at commit $commit on $(nproc) cores by \`bash bench/stiff.sh\`"
+  echo "(this page is written by it; the whole run's time is wall clock on a shared machine). Scene: the"
+  echo "beam at solid fraction 0.60 with its five bars ($spheres spheres). Each method first deals with"
   echo "the overlaps with the bars: \`fix reinforce/invert\` (defaults), \`delete_atoms overlap 0.0125\`"
   echo "(r_bar + rmax), a partial dynamic relaxation (2000 steps of soft, damped Hertz contacts with"
   echo "walls, E = 10 MPa), or nothing. Then every method gets the same stiff run: frictionless Hertz,"
