@@ -77,15 +77,8 @@ echo "profiles: $(ls "$top"/examples/beam/out/profile_phi*.svg | tr '\n' ' ')"
 echo "pictures: $(ls "$top"/examples/beam/out/*.png | tr '\n' ' ')"
 # README.md: each block between markers is this run's table (the three
 # densities only, so that a partial run leaves the README as it was).
-fill() {    # fill TABLE: the block after "<!-- written by run-beam.sh from TABLE"
-  awk -v name="$1" 'FNR == NR {table = table $0 "\n"; next}
-       index($0, "<!-- written by run-beam.sh from " name) == 1 {print; printf "%s", table; skip = 1; next}
-       /^<!-- end of what run-beam.sh writes/ {skip = 0}
-       !skip {print}' "$1" README.md > out/README.md
-  mv out/README.md README.md
-}
 if [ "${REINFORCE_BEAM_PHIS:-050 060 064}" = "050 060 064" ]; then
-  fill out/table.md
-  fill out/quality.md
+  bash "$top/scripts/fill_readme_block.sh" README.md out/table.md
+  bash "$top/scripts/fill_readme_block.sh" README.md out/quality.md
   echo "README.md updated"
 fi

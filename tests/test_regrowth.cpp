@@ -152,8 +152,8 @@ public:
     const std::size_t n = atoms_.size();
     for (std::size_t g = 0; g < ghost_of_.size(); ++g)
       for (int c = 0; c < width; ++c)
-        values[(n + g) * width + c] = values[ghost_of_[g] * width + c] +
-                                      (positions && c < 3 ? shift_[g][c] : 0.0);
+        values[(n + g) * width + c] =
+            values[ghost_of_[g] * width + c] + (positions && c < 3 ? shift_[g][c] : 0.0);
   }
   std::vector<double> gather_all(const std::vector<double> &mine) override { return mine; }
   void post_results(const std::vector<double> &, const std::vector<int> &) override {}

@@ -45,9 +45,5 @@ run multisphere -var bars multisphere
 } > out/table.md
 cat out/table.md
 # README.md: the block between the markers is this run's out/table.md.
-awk 'FNR == NR {table = table $0 "\n"; next}
-     /^<!-- written by run.sh/ {print; printf "%s", table; skip = 1; next}
-     /^<!-- end of what run.sh writes/ {skip = 0}
-     !skip {print}' out/table.md README.md > out/README.md
-mv out/README.md README.md
+bash "$here/../../scripts/fill_readme_block.sh" README.md out/table.md
 echo "README.md updated"
