@@ -21,7 +21,11 @@ def write(run, readme):
 
 def bullets(run):
     """README.md's "What it gives": the figures a reader sees first, from this run."""
-    out, beams = [], [s for s in summary(run) if s[0].startswith("beam")]
+    meta = run.meta
+    out = [f"From the benchmark run started {meta.get('started', '?')} at commit {meta.get('commit', '?')}, with that "
+           f"commit's defaults; it took {meta.get('minutes', '?')} minutes (the machine and its load: "
+           "[docs/benchmarks.md](docs/benchmarks.md)).\n"]
+    beams = [s for s in summary(run) if s[0].startswith("beam")]
     fix64 = find(run.group("beam064", "1"), DEFAULTS)
     if fix64:
         out.append(f"* The paper's beam at solid fraction 0.64: {fix64['targets']:.0f} targets, {fix64['relocated']:.0f} "
