@@ -82,6 +82,12 @@ def bullets(run):
     if fl:
         out.append(f"* The LIGGGHTS example (a packing settled under gravity, two bars): {fl['targets']:.0f} targets, "
                    f"{fl['deleted']:.0f} deleted, {fl['op_seconds']:.1f} s.")
+    fc, dc = find(run.group("cage", "1"), DEFAULTS), [m for m in run.group("cage", "1") if m["method"] == DELETE]
+    if fc:
+        out.append(f"* The cage example's scene (five hooked bars and their stirrups in {run.atoms('cage'):,} spheres): "
+                   f"{fc['targets']:.0f} targets, {fc['deleted']:.0f} deleted, {fc['op_seconds']:.1f} s on one process"
+                   + (f", where `delete_atoms overlap` deletes {max(dc, key=lambda m: float(m['param']))['deleted']:,.0f}"
+                      if dc else "") + ".")
     s1 = find(run.group("speedup_slab", "1"), DEFAULTS) or find(run.group("slab", "1"), DEFAULTS)
     s2 = find(run.group("speedup_slab", "2"), DEFAULTS)
     if s1:

@@ -60,6 +60,11 @@ def introduction(run):
         scenes.append("**liggghts**: the LIGGGHTS example (`examples/liggghts/in.liggghts`, run by "
                       "`liggghts_reinforce`): `fix insert/pack` with radii 3, 4, 5 mm, settled under gravity, cut "
                       "at z = 0.09 m, two bars of 25 rebar spheres laid through it, then the fix")
+    if "cage" in run.scenes():
+        scenes.append("**cage**: the cage example's scene (`examples/cage`): a cage of five 12 mm bars with hooks and "
+                      "6 mm stirrups laid out by `reinforce_layout` (`cage.layout`) in a matrix of radii 3-6 mm grown "
+                      "alone at solid fraction 0.6 by `build/tests/grow_packing` (no packing grown around a cage: "
+                      "no reference)")
     md.append("Scenes: " + "; ".join(scenes) + ".\n")
 
     def short(m):
@@ -108,9 +113,10 @@ def scene_tables(run):
             md.append("\nDynamic relaxation was not run on this scene"
                       + (" (too long for the run's time budget)." if scene == "slab" else "."))
         if scene == "liggghts" and fix:
-            md.append("\nFor this scene the process time includes the whole example (filling and 15,000 steps of "
-                      "settling); the operation time is the fix's own `f_ID[9]`, read from its RESULT line. There is "
-                      "no `delete_atoms` row (the example is a LIGGGHTS script, run as it is).")
+            md.append(f"\nFor this scene the process time includes the whole example (filling and "
+                      f"{int(run.meta.get('liggghts_settle', 15000)):,} steps of settling); the operation time is "
+                      "the fix's own `f_ID[9]`, read from its RESULT line. There is no `delete_atoms` row (the "
+                      "example is a LIGGGHTS script, run as it is).")
     return md
 
 

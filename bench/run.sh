@@ -42,8 +42,8 @@ mkdir -p "$out/scenes" "$out/runs" "$docs"
 mapfile -t methods < <(tail -n +2 "$top/bench/methods.tsv")
 mapfile -t scenes < <(awk -F'\t' -v r="$([ "$quick" = 1 ] && echo quick || echo full)" '$1 == r' "$top/bench/scenes.tsv")
 if [ "$quick" = 1 ]; then
-  # The LIGGGHTS example's settling is fixed (15,000 steps); the relocation alone keeps its fix short.
-  relax_scenes=(small) relax_chunks=2 relax_steps=20 liggghts_repeats=1 liggghts_methods=norgrow
+  # The LIGGGHTS example settles 2,000 steps of its 15,000, and runs the relocation alone: its fix short.
+  relax_scenes=(small) relax_chunks=2 relax_steps=20 liggghts_repeats=1 liggghts_methods=norgrow liggghts_settle=2000
   speedups=("small 1") gap_scene=small gap_repeats=1 rbar_lx=0.125 rbar_cut=0.125 rbar_repeats=1
   # The quick case checks that every figure is produced, not its precision.
   export QUALITY_ARGS=${QUALITY_ARGS:---points 200000}
@@ -51,11 +51,11 @@ else
   # Sized to finish in about 25 minutes on 2 cores (bench/README.md): the regrowth takes tens of seconds on the
   # 0.64 beam and minutes on the slab, so the slab's speedup runs once and the variants of the defaults run on
   # the 0.60 beam only (scenes.tsv).
-  relax_scenes=(beam050 beam060 beam064) relax_chunks=10 relax_steps=300 liggghts_repeats=2
+  relax_scenes=(beam050 beam060 beam064) relax_chunks=10 relax_steps=300 liggghts_repeats=2 liggghts_settle=15000
   liggghts_methods=defaults speedups=("beam060 7") gap_scene=beam060 gap_repeats=3 rbar_lx=0.5 rbar_cut=0
   rbar_repeats=3 slab_rep="2 2 2" slab_speedups=1 slab_repeats=2 scaling_repeats=2
 fi
-parts=(reference compare narrow more liggghts speedup gap rbar relax slab scaling)
+parts=(reference compare narrow more liggghts cage speedup gap rbar relax slab scaling)
 gaps=("1 0.0075" "10 0.075" "100 0.75" "1e20 1e20")    # search in rmax, and in metres
 rbars=(1 1e-2 1e-3 1e-4) nps=(1 2)
 declare -A grower=([around]=grow_packing [lammps]=make_packing.lmp)
@@ -155,7 +155,7 @@ run_method() {
   if [ "$name" = liggghts ]; then
     # LIGGGHTS 3.8 crashes in insert/pack under -screen none: the screen goes to a file.
     inputs="$top/examples/liggghts" timed "$run/log" "$liggghts" -in in.liggghts -var out "$run" -var tag bench \
-      -var extra "$keywords" -log "$run/log" > "$run/screen"
+      -var extra "$keywords" -var settle "$liggghts_settle" -log "$run/log" > "$run/screen"
     after=$run/liggghts_bench.data
   else
     local input=(in.fix -var opts "$keywords")
@@ -262,6 +262,16 @@ scene_file() {
   data="$out/scenes/$1.data"
   case $1 in
     liggghts) data=- ;;    # the example makes its own
+    cage) # the cage example's scene (examples/cage/run.sh): its cage, laid out by reinforce_layout, in the matrix
+      # grown alone in its box; named by the layout's checksum, so that an edited cage is not taken from the cache
+      data="$out/scenes/cage_$(sha1sum < "$top/examples/cage/cage.layout" | cut -c1-8).data"
+      if [ ! -f "$data" ]; then
+        "$REINFORCE_BUILD/src/layout/reinforce_layout" "$top/examples/cage/cage.layout" \
+          --data "$out/scenes/cage_bars.data" > /dev/null || die "reinforce_layout failed on the cage"
+        "$grow" "$out/scenes/cage_matrix.data" --box 0 0.4 0 0.15 0 0.2 --radius 0.003 0.006 --phi 0.6 --seed 7 \
+          --quiet || die "grow_packing failed on the cage's matrix"
+        prepared "$data" "$out/scenes/cage_bars.data" -var matrix "$out/scenes/cage_matrix.data"
+      fi ;;
     small) [ -f "$data" ] || "$make_scene" "$data" --fcc --box 0 0.2 0 0.1 0 0.1 --radius 0.005 0.0075 \
              --bar 0.01 0.05 0.05 0.19 0.05 0.05 0.005 0.0077 > /dev/null ;;
     beam*) prepared "$data" "$beam/bars.data" -var matrix "$beam/matrix_phi${1#beam}.data.gz" ;;
@@ -353,7 +363,7 @@ meta quick "$quick"
 meta started "$(date -u '+%Y-%m-%d %H:%M UTC')"
 meta commit "$(git -C "$top" rev-parse --short HEAD 2>/dev/null || echo unknown)"
 for p in "${parts[@]}"; do
-  [ "$quick" = 1 ] && [[ " more slab scaling " == *" $p "* ]] && continue
+  [ "$quick" = 1 ] && [[ " more cage slab scaling " == *" $p "* ]] && continue
   part "$p" || continue
   for s in "${scenes[@]}"; do
     IFS=$'\t' read -r _ name spart kind rmin rmax rbar reps phi seed keys <<<"$s"
@@ -363,6 +373,7 @@ for p in "${parts[@]}"; do
   done
   case $p in
     liggghts)
+      meta liggghts_settle "$liggghts_settle"
       if [ -x "$liggghts" ]; then bench_scene liggghts 0.003 0.005 0.0025 "$liggghts_repeats" liggghts "$liggghts_methods"
       else meta skipped liggghts; echo "== liggghts: no $liggghts, skipped"; fi ;;
     speedup)

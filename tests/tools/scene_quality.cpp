@@ -221,6 +221,86 @@ struct Grid {
   {
     return static_cast<int>(std::ceil(dist / std::min({size[0], size[1], size[2]})));
   }
+
+  // The offsets of the cells within `cut` of a cell, nearest first, each
+  // with its gap: the least distance between a point of the centre cell and
+  // one of the offset cell (a lower bound on the distance to its items).
+  struct Offset {
+    int d[3];
+    double gap;
+  };
+  std::vector<Offset> offsets_within(double cut) const
+  {
+    std::vector<Offset> out;
+    const int r = reach_for(cut);
+    for (int a = -r; a <= r; ++a)
+      for (int b = -r; b <= r; ++b)
+        for (int c = -r; c <= r; ++c) {
+          const int d[3] = {a, b, c};
+          double g2 = 0;
+          for (int k = 0; k < 3; ++k) {
+            const double g = std::max(0, std::abs(d[k]) - 1) * size[k];
+            g2 += g * g;
+          }
+          if (std::sqrt(g2) <= cut) out.push_back({{a, b, c}, std::sqrt(g2)});
+        }
+    std::stable_sort(out.begin(), out.end(),
+                     [](const Offset &x, const Offset &y) { return x.gap < y.gap; });
+    return out;
+  }
+  // The cell reached from cell c by offset o, or -1 outside a
+  // non-periodic box.
+  int offset_cell(const int *c, const Offset &o) const
+  {
+    int cell[3];
+    for (int k = 0; k < 3; ++k) {
+      cell[k] = c[k] + o.d[k];
+      if (cell[k] < 0 || cell[k] >= n[k]) {
+        if (!s->periodic[k]) return -1;
+        cell[k] = ((cell[k] % n[k]) + n[k]) % n[k];
+      }
+    }
+    return (cell[0] * n[1] + cell[1]) * n[2] + cell[2];
+  }
+  // For every cell, the index of the first of the offsets that reaches an
+  // occupied cell (offsets.size(): none), where nearest_surface starts.
+  std::vector<int> first_occupied(const std::vector<Offset> &offsets) const
+  {
+    std::vector<int> first(head.size());
+    int c[3];
+    for (c[0] = 0; c[0] < n[0]; ++c[0])
+      for (c[1] = 0; c[1] < n[1]; ++c[1])
+        for (c[2] = 0; c[2] < n[2]; ++c[2]) {
+          std::size_t i = 0;
+          for (; i < offsets.size(); ++i) {
+            const int cell = offset_cell(c, offsets[i]);
+            if (cell >= 0 && head[cell] >= 0) break;
+          }
+          first[(c[0] * n[1] + c[1]) * n[2] + c[2]] = static_cast<int>(i);
+        }
+    return first;
+  }
+  // The least distance from p to an item's surface (|p - x| - r), kFar when
+  // none lies within the offsets' cut. Exact: the cells are visited nearest
+  // first from the first occupied one, and the visit stops once no farther
+  // cell can hold a nearer surface (gap - rmax_items >= the best so far).
+  double nearest_surface(const double *p, const std::vector<Offset> &offsets,
+                         const std::vector<int> &first, double rmax_items) const
+  {
+    const int c[3] = {coord(p[0], 0), coord(p[1], 1), coord(p[2], 2)};
+    double best = kFar;
+    for (std::size_t i = first[(c[0] * n[1] + c[1]) * n[2] + c[2]]; i < offsets.size(); ++i) {
+      if (offsets[i].gap - rmax_items >= best) break;
+      const int cell = offset_cell(c, offsets[i]);
+      if (cell < 0) continue;
+      for (int j = head[cell]; j >= 0; j = next[j]) {
+        double d[3];
+        s->delta(p, items[j]->x, d);
+        best = std::min(best, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) - items[j]->r);
+      }
+    }
+    return best;
+  }
 };
 
 struct Options {
@@ -267,8 +347,13 @@ Profile profile(const Scene &s, const Options &o)
   Grid gm, gb;
   gm.build(s, matrix, 2 * std::max(mrmax, 1e-300));
   const double search = std::max(o.out, o.bulk_from) * o.rmax;    // beyond: "far"
-  gb.build(s, rebar, search + brmax);
-  const int mreach = gm.reach_for(mrmax), breach = gb.reach_for(search + brmax);
+  // The rebar in cells of a quarter of the reach, searched nearest first
+  // from the first occupied cell: with many rebar spheres (fibres) most
+  // points stop after a few cells, and far from the bars none is visited.
+  gb.build(s, rebar, 0.25 * (search + brmax));
+  const std::vector<Grid::Offset> rebar_cells = gb.offsets_within(search + brmax);
+  const std::vector<int> rebar_first = gb.first_occupied(rebar_cells);
+  const int mreach = gm.reach_for(mrmax);
   const std::size_t nbins = static_cast<std::size_t>(std::ceil(o.out * o.rmax / o.bin - 1e-9));
   Profile p;
   p.n.assign(nbins, 0);
@@ -288,12 +373,7 @@ Profile profile(const Scene &s, const Options &o)
         const double pt[3] = {s.lo[0] + (i + rng.uniform()) * step[0],
                               s.lo[1] + (j + rng.uniform()) * step[1],
                               s.lo[2] + (k + rng.uniform()) * step[2]};
-        double dist = kFar;
-        gb.visit(pt, breach, [&](const Atom &b) {
-          double d[3];
-          s.delta(pt, b.x, d);
-          dist = std::min(dist, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) - b.r);
-        });
+        double dist = gb.nearest_surface(pt, rebar_cells, rebar_first, brmax);
         if (dist > search) dist = kFar;
         if (dist < 0) continue;    // inside a bar
         bool solid = false;
@@ -344,7 +424,17 @@ double union_volume(const Scene &s, int rebar_type, int samples, double *se)
   const int reach = g.reach_for(2 * brmax);
   Rng rng(987654321);
   double total = 0, var = 0;
+  std::vector<const Atom *> near;
   for (const Atom *a : rebar) {
+    // A sphere holding a point of a overlaps a: those (a among them) are
+    // the only ones to test, found once (a margin of 1e-9 for rounding).
+    near.clear();
+    g.visit(a->x, reach, [&](const Atom &b) {
+      double d[3];
+      s.delta(a->x, b.x, d);
+      const double reach_ab = (a->r + b.r) * (1 + 1e-9);
+      if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= reach_ab * reach_ab) near.push_back(&b);
+    });
     double s1 = 0, s2 = 0;
     for (int m = 0; m < samples; ++m) {
       double q[3], p[3];
@@ -352,11 +442,11 @@ double union_volume(const Scene &s, int rebar_type, int samples, double *se)
       for (int k = 0; k < 3; ++k) p[k] = a->x[k] + a->r * q[k];
       s.wrap(p);
       int holders = 0;
-      g.visit(p, reach, [&](const Atom &b) {
+      for (const Atom *b : near) {
         double d[3];
-        s.delta(p, b.x, d);
-        if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= b.r * b.r) ++holders;
-      });
+        s.delta(p, b->x, d);
+        if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= b->r * b->r) ++holders;
+      }
       const double w = 1.0 / std::max(holders, 1);
       s1 += w;
       s2 += w * w;
