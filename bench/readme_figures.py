@@ -85,7 +85,7 @@ def bullets(run):
     fc, dc = find(run.group("cage", "1"), DEFAULTS), [m for m in run.group("cage", "1") if m["method"] == DELETE]
     if fc:
         out.append(f"* The cage example's scene (five hooked bars and their stirrups in {run.atoms('cage'):,} spheres): "
-                   f"{fc['targets']:.0f} targets, {fc['deleted']:.0f} deleted, {fc['op_seconds']:.1f} s on one process"
+                   f"{fc['targets']:,.0f} targets, {fc['deleted']:,.0f} deleted, {fc['op_seconds']:.1f} s on one process"
                    + (f", where `delete_atoms overlap` deletes {max(dc, key=lambda m: float(m['param']))['deleted']:,.0f}"
                       if dc else "") + ".")
     s1 = find(run.group("speedup_slab", "1"), DEFAULTS) or find(run.group("slab", "1"), DEFAULTS)
