@@ -88,7 +88,7 @@ def scene_tables(run):
     for scene in compared_scenes(run):
         g = scene_groups(run, scene)
         truth = next((m["targets"] for m in g if m["method"].startswith("fix") and m["targets"] is not None), None)
-        md.append(f"\n## {scene} ({run.atoms(scene):,} spheres, {int(truth or 0)} targets)\n")
+        md.append(f"\n## {scene} ({run.atoms(scene):,} spheres, {int(truth or 0):,} targets)\n")
         md += table(["method", "parameter", "procs", "runs", "relocated", "deleted", "volume after / before",
                      "largest overlap", "rounds", "operation s", "process s", "peak MB"],
                     [[m["method"], m["param"] + (" groups" if m["method"].startswith("fix") else " cutoff" if
