@@ -4,7 +4,7 @@
 # (with a stirrup, 229 spheres, the LIGGGHTS run took 18 s against 7 s) put at
 # the centres their files state into a packing (make_scene), then
 # run_scene.sh (the checker: no overlap, rebar untouched, atoms conserved;
-# the counts against the fix's; the same output twice).
+# the counts against the fix's).
 #  * LAMMPS: each clump's molecule file (--molecules) by molecule and
 #    create_atoms ... mol, type 2, the two one rigid body (fix rigid
 #    single), in.scene's setup;

@@ -2,8 +2,8 @@
 # The fix on a packing around reinforcement laid out by reinforce_layout
 # (scene.layout: a cage with hooks, a mesh, fibres apart), through
 # run_scene.sh: the checker on the written result (no overlap, rebar
-# untouched, atoms conserved), the counts against the fix's, the same
-# output twice; with SCENE_REFERENCE=1 and SCENE_POST (same_atoms.sh) the
+# untouched, atoms conserved), the counts against the fix's; with
+# SCENE_REFERENCE=1 and SCENE_POST (same_atoms.sh) the
 # same scene as on one process.
 #   host_scene.sh lammps|liggghts NAME NP BUILD_DIR -- MAKE_SCENE_ARGS -- HOST_VARS -- CHECK_ARGS
 # LAMMPS adds the bars as a user would (read_data FILE add append offset 1

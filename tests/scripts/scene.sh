@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # One scene test, for either host: make the scene with make_scene, then
-# run_scene.sh on it (checks on the written result, the same output twice).
+# run_scene.sh on it (checks on the written result; the same output twice with SCENE_TWICE=1).
 #   scene.sh lammps|liggghts INPUT NAME NP BUILD_DIR -- MAKE_SCENE_ARGS -- HOST_VARS -- CHECK_ARGS
 # SCENE_INPUT, when set, replaces INPUT. SCENE_DENSITY_SPREAD=1 gives each
 # matrix sphere its own density (1500 + 50 (id mod 23) kg/m^3) in the data
